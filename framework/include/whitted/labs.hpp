@@ -1,0 +1,70 @@
+// The lab contract: every function the six labs ask you to write.
+//
+// Your code goes in labs/NN_*.cpp; solution/NN_*.cpp holds the reference with the
+// same names. The framework calls these functions and nothing else of yours.
+// Conventions used everywhere:
+//   - directions are unit vectors; wo points from the surface back along the
+//     incoming ray (wo = -ray.direction); wi points from the surface outwards
+//     (towards a light, or along a new reflected / refracted ray);
+//   - hit.normal is a unit vector on the same side as wo (see hit.hpp);
+//   - eta_i is the index of refraction on the side the light arrives from
+//     (the side of wo), eta_t the one on the other side (air is 1).
+#pragma once
+
+#include "whitted/camera.hpp"
+#include "whitted/hit.hpp"
+#include "whitted/interval.hpp"
+#include "whitted/primitive.hpp"
+#include "whitted/tracer.hpp"
+
+#include <optional>
+#include <span>
+
+namespace whitted {
+
+// ---- Lab 1: ray casting (01_ray_casting.cpp) --------------------------------
+/// The eye ray through viewport position (x, y), in pixels from the bottom-left
+/// corner of the viewport: the centre of pixel (i, j) is (i + 0.5, j + 0.5).
+Ray primary_ray(const Camera& camera, double x, double y);
+/// The nearest hit on the sphere with t inside t_range (uv unused).
+std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range);
+/// The hit on the infinite plane with t inside t_range (uv unused).
+std::optional<Hit> intersect_plane(const Ray& ray, const Plane& plane, Interval t_range);
+/// The hit on the triangle with t inside t_range; uv = barycentric (b1, b2) of p1 and p2.
+std::optional<Hit> intersect_triangle(const Ray& ray, const Triangle& triangle, Interval t_range);
+/// The nearest hit among `primitives` with t inside t_range (use `intersect()` on each).
+std::optional<Hit> closest_hit(const Ray& ray, std::span<const Primitive> primitives, Interval t_range);
+
+// ---- Lab 2: shadows (02_shadows.cpp) ----------------------------------------
+/// A ray leaving the hit point in `direction` that cannot hit the surface it starts on.
+Ray spawn_ray(const Hit& hit, const Vec3& direction);
+/// True when nothing lies between the hit point and the light (a shadow feeler).
+bool is_lit(const Tracer& tracer, const Hit& hit, const PointLight& light);
+/// Lambert diffuse light from every light that reaches the hit point.
+Color lambert(const Tracer& tracer, const Hit& hit);
+
+// ---- Lab 3: Blinn-Phong (03_blinn_phong.cpp) --------------------------------
+/// Ambient plus, for every light that reaches the hit point, diffuse and Blinn-Phong specular.
+Color blinn_phong(const Tracer& tracer, const Hit& hit, const Vec3& wo);
+
+// ---- Lab 4: reflection (04_reflection.cpp) ----------------------------------
+/// The mirror direction wi of wo about the normal n: 2 (wo . n) n - wo.
+Vec3 mirror_direction(const Vec3& wo, const Vec3& n);
+/// The mirror-reflected light, traced one level deeper and weighted by the material's Ks.
+Color reflection(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth);
+
+// ---- Lab 5: refraction (05_refraction.cpp) ----------------------------------
+/// The refracted direction for wo on the side of n (Snell's law), or nothing on
+/// total internal reflection.
+std::optional<Vec3> refracted_direction(const Vec3& wo, const Vec3& n, double eta_i, double eta_t);
+/// The refracted light, traced one level deeper and weighted by the material's T.
+Color refraction(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth);
+
+// ---- Lab 6: Fresnel (06_fresnel.cpp) ----------------------------------------
+/// The unpolarised Fresnel reflectance Kr = (Rs + Rp) / 2 for light arriving at
+/// cos_theta_i (> 0) from eta_i into eta_t; 1 on total internal reflection.
+double fresnel_reflectance(double cos_theta_i, double eta_i, double eta_t);
+/// Reflected and refracted light of a dielectric, weighted Kr and (1 - Kr) T.
+Color fresnel_blend(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth);
+
+} // namespace whitted

@@ -1,0 +1,29 @@
+// Rendering a whole image: the pixel loop, split into tiles over threads.
+//
+// Why: each pixel is computed on its own from the read-only scene, so the
+// image is bit-for-bit the same whatever the number of threads or the order in
+// which tiles finish. Threads only take the next tile number from a counter.
+#pragma once
+
+#include "whitted/image.hpp"
+#include "whitted/tracer.hpp"
+
+#include <functional>
+
+namespace whitted {
+
+struct RenderResult {
+    Image image;
+    RayStats stats;
+    double seconds = 0.0;   // wall-clock time of the pixel loop
+};
+
+/// Called now and then from the rendering threads with the fraction of tiles done (0..1).
+using ProgressCallback = std::function<void(double fraction_done)>;
+
+/// Renders the scene's camera view at the camera's resolution with `threads`
+/// threads (0: one per hardware thread).
+RenderResult render(const Scene& scene, const RenderSettings& settings, int threads = 0,
+                    const ProgressCallback& progress = {});
+
+} // namespace whitted

@@ -1,0 +1,61 @@
+// The scene: what a file describes, built once into a read-only structure that
+// answers the two ray queries of a ray tracer.
+//
+// Why: loaders fill a plain `SceneData`; `Scene` then builds the acceleration
+// structure once (Embree's build-then-query). From then on the scene never
+// changes, so any number of threads may query it at the same time.
+#pragma once
+
+#include "whitted/bvh.hpp"
+#include "whitted/camera.hpp"
+#include "whitted/material.hpp"
+#include "whitted/primitive.hpp"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace whitted {
+
+/// Everything a scene file says, as plain values.
+struct SceneData {
+    Camera camera;
+    Color background{0.0};
+    Color ambient{0.0};           // ambient light intensity (extension keyword `ambient`)
+    std::vector<PointLight> lights;
+    std::vector<Material> materials;
+    std::vector<Primitive> primitives;
+    std::vector<VertexNormals> vertex_normals;
+    int max_depth = 5;            // deepest ray in the ray tree; the eye ray is depth 1
+    int samples_per_pixel = 1;    // P3F `spp` (rendering uses 1 for now)
+};
+
+class Scene {
+  public:
+    /// Takes the data and builds the acceleration structure over its primitives.
+    explicit Scene(SceneData data);
+
+    const Camera& camera() const { return data_.camera; }
+    const Color& background() const { return data_.background; }
+    const Color& ambient() const { return data_.ambient; }
+    std::span<const PointLight> lights() const { return data_.lights; }
+    std::span<const Primitive> primitives() const { return data_.primitives; }
+    int max_depth() const { return data_.max_depth; }
+
+    /// The material of the surface that was hit.
+    const Material& material(const Hit& hit) const { return data_.materials[hit.material]; }
+
+    /// The nearest surface along the ray with t inside t_range, if any.
+    std::optional<Hit> closest_hit(const Ray& ray, Interval t_range = {}) const;
+
+    /// True when any surface lies along the ray with t inside t_range.
+    bool occluded(const Ray& ray, Interval t_range) const;
+
+  private:
+    SceneData data_;             // primitives: the BVH's ones first, in BVH order, then infinite planes
+    std::size_t bounded_count_ = 0;
+    Bvh bvh_;
+};
+
+} // namespace whitted

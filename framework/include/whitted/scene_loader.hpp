@@ -1,0 +1,47 @@
+// Reading scene files: NFF 3.9 (Eric Haines' Neutral File Format) and P3F (the
+// course's format), plus the framework's small extensions (docs/scene_format.md).
+//
+// Why: both formats are read as a stream of tokens, so line breaks never matter
+// and every error can name the file, line and column where it happened. The
+// dialect comes from the file extension. All validation happens here, so the
+// renderer can trust what it gets.
+#pragma once
+
+#include "whitted/scene.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace whitted {
+
+/// A scene file error. what() is one line: "file:line:col: what was expected, what was found".
+struct SceneError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+enum class Dialect { nff, p3f };
+
+struct LoadedScene {
+    SceneData data;
+    std::vector<std::string> warnings; // one line each, "file:line:col: warning: ..."
+};
+
+/// Hard limits that keep hostile files from exhausting the machine.
+struct SceneLimits {
+    int max_resolution = 16384;          // per side
+    std::size_t max_primitives = 50'000'000;
+    std::size_t max_polygon_vertices = 100'000;
+};
+
+/// Loads a scene file; the dialect comes from the extension (.nff or .p3f).
+/// Throws SceneError.
+LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& limits = {});
+
+/// Parses scene text; `file_name` is used in messages only. Throws SceneError.
+LoadedScene parse_scene(std::string_view text, Dialect dialect, std::string_view file_name,
+                        const SceneLimits& limits = {});
+
+} // namespace whitted

@@ -1,0 +1,58 @@
+// The recursive ray tracer of the slides, `trace(ray, depth)`, and the
+// per-render settings it follows.
+//
+// Why: the framework owns the recursion's skeleton (find the closest hit, add
+// the local colour, then the reflected and refracted contributions) so that
+// each lab can replace one piece of it. The labs receive a `Tracer` to cast
+// shadow feelers and to call `trace()` again for secondary rays; it also counts
+// rays for `--stats`.
+#pragma once
+
+#include "whitted/scene.hpp"
+
+#include <cstdint>
+
+namespace whitted {
+
+/// Rays cast during a render, by kind.
+struct RayStats {
+    std::uint64_t eye = 0;
+    std::uint64_t shadow = 0;
+    std::uint64_t reflected = 0;
+    std::uint64_t refracted = 0;
+
+    std::uint64_t total() const { return eye + shadow + reflected + refracted; }
+    RayStats& operator+=(const RayStats& other);
+};
+
+/// Which labs' features a render uses: stage k renders with labs 1..k.
+struct RenderSettings {
+    int stage = 6;      // 1 ray casting, 2 shadows, 3 Blinn-Phong, 4 reflection, 5 refraction, 6 Fresnel
+    int max_depth = 5;  // deepest ray in the ray tree; the eye ray is depth 1
+};
+
+class Tracer {
+  public:
+    /// A tracer for one thread: `stats` receives this thread's ray counts.
+    Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats)
+        : scene_(scene), settings_(settings), stats_(stats) {}
+
+    const Scene& scene() const { return scene_; }
+    const RenderSettings& settings() const { return settings_; }
+
+    /// The colour seen along `ray`, which is at `depth` in the ray tree (eye ray: 1).
+    Color trace(const Ray& ray, int depth, RayKind kind) const;
+
+    /// The colour of the pixel sample at viewport position (x, y) (see primary_ray).
+    Color trace_pixel(double x, double y) const;
+
+    /// True when something lies along the shadow feeler `ray` with 0 < t < distance.
+    bool occluded(const Ray& ray, double distance) const;
+
+  private:
+    const Scene& scene_;
+    const RenderSettings& settings_;
+    RayStats& stats_;
+};
+
+} // namespace whitted

@@ -1,0 +1,27 @@
+#include "whitted/labs.hpp"
+#include "whitted/primitive.hpp"
+
+#include <type_traits>
+
+namespace whitted {
+
+std::optional<Hit> intersect(const Ray& ray, const Primitive& primitive, Interval t_range) {
+    // The one place that dispatches on the kind of shape.
+    std::optional<Hit> hit = std::visit(
+        [&](const auto& shape) -> std::optional<Hit> {
+            using T = std::decay_t<decltype(shape)>;
+            if constexpr (std::is_same_v<T, Sphere>) return intersect_sphere(ray, shape, t_range);
+            else if constexpr (std::is_same_v<T, Plane>) return intersect_plane(ray, shape, t_range);
+            else if constexpr (std::is_same_v<T, Triangle>) return intersect_triangle(ray, shape, t_range);
+            else if constexpr (std::is_same_v<T, Box>) return intersect_box(ray, shape, t_range);
+            else return intersect_cone(ray, shape, t_range);
+        },
+        primitive.shape);
+    if (hit) {
+        hit->primitive = primitive.id;
+        hit->material = primitive.material;
+    }
+    return hit;
+}
+
+} // namespace whitted

@@ -1,0 +1,82 @@
+#include "whitted/scene.hpp"
+
+#include "whitted/labs.hpp"
+
+#include <utility>
+
+namespace whitted {
+namespace {
+
+// Interpolates a pp triangle's vertex normals at the hit's barycentric coordinates.
+void apply_vertex_normals(Hit& hit, const VertexNormals& normals) {
+    const double b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
+    Vec3 n = b0 * normals[0] + b1 * normals[1] + b2 * normals[2];
+    const double length = glm::length(n);
+    if (!(length > 0.0)) return; // opposite normals cancel: keep the geometric one
+    n /= length;
+    // The shading normal faces the same side as the geometric one.
+    if (glm::dot(n, hit.geometric_normal) < 0.0) n = -n;
+    hit.normal = n;
+}
+
+} // namespace
+
+Scene::Scene(SceneData data) : data_(std::move(data)) {
+    // Bounded primitives go into the BVH, in its order; infinite planes follow.
+    std::vector<Primitive> bounded, unbounded;
+    std::vector<Aabb> boxes;
+    for (Primitive& primitive : data_.primitives) {
+        if (auto box = bounds(primitive.shape)) {
+            boxes.push_back(*box);
+            bounded.push_back(std::move(primitive));
+        } else {
+            unbounded.push_back(std::move(primitive));
+        }
+    }
+    bvh_ = Bvh(boxes);
+    bounded_count_ = bounded.size();
+    data_.primitives.clear();
+    data_.primitives.reserve(bounded.size() + unbounded.size());
+    for (std::uint32_t index : bvh_.order()) data_.primitives.push_back(std::move(bounded[index]));
+    for (Primitive& primitive : unbounded) data_.primitives.push_back(std::move(primitive));
+    for (std::size_t i = 0; i < data_.primitives.size(); ++i) data_.primitives[i].id = static_cast<std::uint32_t>(i);
+}
+
+std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
+    const std::span<const Primitive> all = data_.primitives;
+    // Infinite planes first: a plane hit shortens the range the BVH must search.
+    std::optional<Hit> nearest = whitted::closest_hit(ray, all.subspan(bounded_count_), t_range);
+    if (nearest) t_range.max = nearest->t;
+    bvh_.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+        if (auto hit = whitted::closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max})) {
+            nearest = hit;
+            return hit->t;
+        }
+        return t_max;
+    });
+    if (nearest) {
+        const Primitive& primitive = data_.primitives[nearest->primitive];
+        if (primitive.vertex_normals >= 0) apply_vertex_normals(*nearest, data_.vertex_normals[primitive.vertex_normals]);
+    }
+    return nearest;
+}
+
+bool Scene::occluded(const Ray& ray, Interval t_range) const {
+    const std::span<const Primitive> all = data_.primitives;
+    for (const Primitive& plane : all.subspan(bounded_count_)) {
+        if (intersect(ray, plane, t_range)) return true;
+    }
+    bool blocked = false;
+    bvh_.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+        for (const Primitive& primitive : all.subspan(first, count)) {
+            if (intersect(ray, primitive, Interval{t_range.min, t_max})) {
+                blocked = true;
+                return -1.0; // any hit will do: stop
+            }
+        }
+        return t_max;
+    });
+    return blocked;
+}
+
+} // namespace whitted

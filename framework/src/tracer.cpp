@@ -1,0 +1,50 @@
+#include "whitted/tracer.hpp"
+
+#include "whitted/labs.hpp"
+
+namespace whitted {
+
+RayStats& RayStats::operator+=(const RayStats& other) {
+    eye += other.eye;
+    shadow += other.shadow;
+    reflected += other.reflected;
+    refracted += other.refracted;
+    return *this;
+}
+
+Color Tracer::trace(const Ray& ray, int depth, RayKind kind) const {
+    switch (kind) {
+    case RayKind::eye: ++stats_.eye; break;
+    case RayKind::shadow: ++stats_.shadow; break;
+    case RayKind::reflected: ++stats_.reflected; break;
+    case RayKind::refracted: ++stats_.refracted; break;
+    }
+    const std::optional<Hit> hit = scene_.closest_hit(ray);
+    if (!hit) return scene_.background();
+    const Material& material = scene_.material(*hit);
+    const Vec3 wo = -ray.direction;
+    const int stage = settings_.stage;
+
+    // Local colour: flat (lab 1), Lambert with shadows (lab 2), Blinn-Phong (lab 3 on).
+    if (stage == 1) return material.color_at(hit->point);
+    Color color = stage == 2 ? lambert(*this, *hit) : blinn_phong(*this, *hit, wo);
+    if (stage < 4 || depth >= settings_.max_depth) return color;
+
+    // Secondary rays, one level deeper.
+    const bool transparent = material.transmittance > 0.0;
+    if (stage >= 6 && transparent) return color + fresnel_blend(*this, *hit, wo, depth);
+    if (material.specular > 0.0) color += reflection(*this, *hit, wo, depth);
+    if (stage >= 5 && transparent) color += refraction(*this, *hit, wo, depth);
+    return color;
+}
+
+Color Tracer::trace_pixel(double x, double y) const {
+    return trace(primary_ray(scene_.camera(), x, y), 1, RayKind::eye);
+}
+
+bool Tracer::occluded(const Ray& ray, double distance) const {
+    ++stats_.shadow;
+    return scene_.occluded(ray, Interval{0.0, distance});
+}
+
+} // namespace whitted

@@ -1,0 +1,18 @@
+// Lab 4 — mirror reflection: the reflected direction and one more level of the ray tree.
+#include "whitted/labs.hpp"
+
+namespace whitted {
+
+Vec3 mirror_direction(const Vec3& wo, const Vec3& n) {
+    // r = 2 (V . n) n - V
+    return 2.0 * glm::dot(wo, n) * n - wo;
+}
+
+Color reflection(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth) {
+    const Material& material = tracer.scene().material(hit);
+    const Ray reflected = spawn_ray(hit, mirror_direction(wo, hit.normal));
+    const Color incoming = tracer.trace(reflected, depth + 1, RayKind::reflected);
+    return material.specular * material.specular_color * incoming;
+}
+
+} // namespace whitted
