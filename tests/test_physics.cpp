@@ -1,0 +1,128 @@
+// Spot checks of the reference labs against values derived by hand.
+#include "whitted/labs.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace whitted;
+
+namespace {
+
+double degrees(double radians_value) { return radians_value * 180.0 / kPi; }
+
+// wo at angle theta from the normal n = +z, in the xz-plane.
+Vec3 direction_at(double theta_degrees) {
+    const double theta = radians(theta_degrees);
+    return Vec3(std::sin(theta), 0.0, std::cos(theta));
+}
+
+const Vec3 kUp(0.0, 0.0, 1.0);
+
+} // namespace
+
+TEST(Reflection, MirrorDirectionKeepsTheAngleAndFlipsTheTangent) {
+    // r = 2 (wo . n) n - wo: for wo = (sin t, 0, cos t), r = (-sin t, 0, cos t).
+    const Vec3 r = mirror_direction(direction_at(30.0), kUp);
+    EXPECT_NEAR(r.x, -0.5, 1e-15);
+    EXPECT_NEAR(r.z, std::sqrt(3.0) / 2.0, 1e-15);
+}
+
+TEST(Refraction, SnellAngleAt45DegreesIntoGlass) {
+    // sin(theta_t) = sin(45) / 1.5  =>  theta_t = 28.1255 degrees, on the other side of the surface.
+    const auto wt = refracted_direction(direction_at(45.0), kUp, 1.0, 1.5);
+    ASSERT_TRUE(wt.has_value());
+    EXPECT_NEAR(degrees(std::acos(-wt->z)), 28.1255, 1e-4);
+    EXPECT_LT(wt->x, 0.0); // continues forward: opposite tangent side from wo
+    EXPECT_NEAR(glm::length(*wt), 1.0, 1e-12);
+}
+
+TEST(Refraction, SnellAngleAt80DegreesIntoGlass) {
+    const auto wt = refracted_direction(direction_at(80.0), kUp, 1.0, 1.5);
+    ASSERT_TRUE(wt.has_value());
+    EXPECT_NEAR(degrees(std::acos(-wt->z)), 41.0364, 1e-4);
+}
+
+TEST(Refraction, NormalIncidenceGoesStraightThrough) {
+    const auto wt = refracted_direction(kUp, kUp, 1.0, 1.5);
+    ASSERT_TRUE(wt.has_value());
+    EXPECT_NEAR(wt->z, -1.0, 1e-15);
+}
+
+TEST(Refraction, TotalInternalReflectionBeyondTheCriticalAngle) {
+    // Critical angle glass -> air: asin(1 / 1.5) = 41.8103 degrees.
+    EXPECT_TRUE(refracted_direction(direction_at(41.80), kUp, 1.5, 1.0).has_value());
+    EXPECT_FALSE(refracted_direction(direction_at(41.82), kUp, 1.5, 1.0).has_value());
+}
+
+TEST(Fresnel, FourPercentAtNormalIncidenceOnGlass) {
+    // ((1 - 1.5) / (1 + 1.5))^2 = 0.04
+    EXPECT_NEAR(fresnel_reflectance(1.0, 1.0, 1.5), 0.04, 1e-12);
+}
+
+TEST(Fresnel, SpotValuesAt45And80Degrees) {
+    EXPECT_NEAR(fresnel_reflectance(std::cos(radians(45.0)), 1.0, 1.5), 0.050240, 1e-6);
+    EXPECT_NEAR(fresnel_reflectance(std::cos(radians(80.0)), 1.0, 1.5), 0.387704, 1e-6);
+}
+
+TEST(Fresnel, TotalInternalReflectionReflectsEverything) {
+    EXPECT_EQ(fresnel_reflectance(std::cos(radians(60.0)), 1.5, 1.0), 1.0);
+}
+
+TEST(Fresnel, SameOnBothSidesAtMatchingAngles) {
+    // Reciprocity: light entering at 45 degrees and leaving along the refracted path reflect alike.
+    const double theta_t = std::asin(std::sin(radians(45.0)) / 1.5);
+    EXPECT_NEAR(fresnel_reflectance(std::cos(radians(45.0)), 1.0, 1.5),
+                fresnel_reflectance(std::cos(theta_t), 1.5, 1.0), 1e-12);
+}
+
+TEST(SpawnRay, GrazingRaysLeavingASphereDoNotHitItAgain) {
+    // Shadow feelers that leave a sphere almost tangentially (89.99 degrees from
+    // the normal) must not find the sphere they start on, wherever they start.
+    const Sphere sphere{Point3(3.0, -2.0, 7.0), 2.5};
+    int self_hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const double phi = 0.1 + i * 0.0031, theta = 0.2 + i * 0.0017;
+        const Vec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+        const Ray eye{sphere.center + 10.0 * n, -n};
+        const auto hit = intersect_sphere(eye, sphere, Interval{});
+        ASSERT_TRUE(hit.has_value());
+        const Vec3 tangent = glm::normalize(glm::cross(n, Vec3(0.3, 0.5, 0.7)));
+        const Vec3 grazing = glm::normalize(tangent + std::tan(radians(0.01)) * n);
+        if (intersect_sphere(spawn_ray(*hit, grazing), sphere, Interval{})) ++self_hits;
+    }
+    EXPECT_EQ(self_hits, 0);
+}
+
+TEST(SpawnRay, RaysIntoTheSurfaceFindTheFarWallNotTheNearOne) {
+    // Refracted rays entering a sphere straight towards its centre must travel
+    // the full diameter: their first hit is the far wall, seen from inside.
+    const Sphere sphere{Point3(0.3, -1.7, 2.9), 1.3};
+    int wrong = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const double phi = 0.1 + i * 0.0031, theta = 0.2 + i * 0.0017;
+        const Vec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+        const auto hit = intersect_sphere(Ray{sphere.center + 7.0 * n, -n}, sphere, Interval{});
+        ASSERT_TRUE(hit.has_value());
+        const auto inside = intersect_sphere(spawn_ray(*hit, -n), sphere, Interval{});
+        if (!inside || inside->front_face || std::abs(inside->t - 2.0 * sphere.radius) > 1e-6) ++wrong;
+    }
+    EXPECT_EQ(wrong, 0);
+}
+
+TEST(SpawnRay, GrazingRaysAlongAFarAwayTiltedPlaneDoNotHitIt) {
+    // Coordinates around 1000 and a tilted plane: the computed hit point is off
+    // the plane by rounding errors of about 1e-13, on either side.
+    const Vec3 normal = glm::normalize(Vec3(0.1, 1.0, 0.3));
+    const Plane plane{Point3(1000.1, 1000.3, -999.7), normal};
+    const Vec3 tangent = glm::normalize(glm::cross(normal, Vec3(1.0, 0.0, 0.0)));
+    int self_hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Ray eye{Point3(1000.0 + i * 0.37, 1020.0, -1000.0 - i * 0.11), glm::normalize(Vec3(0.3, -1.0, 0.2 + i * 1e-3))};
+        const auto hit = intersect_plane(eye, plane, Interval{});
+        ASSERT_TRUE(hit.has_value());
+        const Vec3 grazing = glm::normalize(tangent + 1e-7 * hit->normal);
+        if (intersect_plane(spawn_ray(*hit, grazing), plane, Interval{})) ++self_hits;
+    }
+    EXPECT_EQ(self_hits, 0);
+}
