@@ -11,8 +11,8 @@ Vec3 mirror_direction(const Vec3& wo, const Vec3& n) {
 Color reflection(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth) {
     const Material& material = tracer.scene().material(hit);
     const Ray reflected = spawn_ray(hit, mirror_direction(wo, hit.normal));
-    const Color incoming = tracer.trace(reflected, depth + 1, RayKind::reflected);
-    return material.specular * material.specular_color * incoming;
+    // I(r) weighted by the specular reflection coefficient.
+    return tracer.trace(reflected, depth + 1, RayKind::reflected, material.specular * material.specular_color);
 }
 
 } // namespace whitted

@@ -25,8 +25,8 @@ Color refraction(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth
     const double eta_t = hit.front_face ? material.ior : 1.0;
     const std::optional<Vec3> wt = refracted_direction(wo, hit.normal, eta_i, eta_t);
     if (!wt) return Color(0.0); // total internal reflection: nothing is transmitted
-    const Color incoming = tracer.trace(spawn_ray(hit, *wt), depth + 1, RayKind::refracted);
-    return material.transmittance * incoming;
+    // I(t) weighted by the transmittance.
+    return tracer.trace(spawn_ray(hit, *wt), depth + 1, RayKind::refracted, Color(material.transmittance));
 }
 
 } // namespace whitted

@@ -22,10 +22,11 @@ Color fresnel_blend(const Tracer& tracer, const Hit& hit, const Vec3& wo, int de
     const double kr = fresnel_reflectance(glm::dot(wo, hit.normal), eta_i, eta_t);
     // kr I(r) + (1 - kr) T I(t)
     const Ray reflected = spawn_ray(hit, mirror_direction(wo, hit.normal));
-    Color color = kr * tracer.trace(reflected, depth + 1, RayKind::reflected);
+    Color color = tracer.trace(reflected, depth + 1, RayKind::reflected, Color(kr));
     if (kr < 1.0) {
         if (const std::optional<Vec3> wt = refracted_direction(wo, hit.normal, eta_i, eta_t)) {
-            color += (1.0 - kr) * material.transmittance * tracer.trace(spawn_ray(hit, *wt), depth + 1, RayKind::refracted);
+            const Color weight((1.0 - kr) * material.transmittance);
+            color += tracer.trace(spawn_ray(hit, *wt), depth + 1, RayKind::refracted, weight);
         }
     }
     return color;

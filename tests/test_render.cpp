@@ -1,4 +1,5 @@
 // Whole-image properties of the renderer: determinism, stages, failures.
+#include "whitted/image_compare.hpp"
 #include "whitted/render.hpp"
 
 #include <gtest/gtest.h>
@@ -96,4 +97,20 @@ TEST(Render, AnExceptionInAnyThreadReachesTheCaller) {
     const Scene scene(effects_scene(64));
     EXPECT_THROW(render(scene, RenderSettings{}, 2, [](double) { throw std::runtime_error("stop"); }),
                  std::runtime_error);
+}
+
+TEST(Render, AdaptiveDepthControlSavesRaysWithoutChangingThePicture) {
+    // A glass sphere at depth 12 spawns two rays at every hit; pruning rays whose
+    // accumulated weight is below 1/1024 must cut the ray count and stay within the image gate.
+    const Scene scene(effects_scene(48));
+    RenderSettings every_ray;
+    every_ray.max_depth = 12;
+    every_ray.min_weight = 0.0;
+    RenderSettings pruned = every_ray;
+    pruned.min_weight = 1.0 / 1024.0;
+    const RenderResult full = render(scene, every_ray, 2);
+    const RenderResult fast = render(scene, pruned, 2);
+    EXPECT_LT(fast.stats.total() * 2, full.stats.total());
+    const ImageDifference difference = compare_images(full.image, fast.image);
+    EXPECT_TRUE(difference.passed) << difference.summary();
 }

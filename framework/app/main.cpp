@@ -20,6 +20,7 @@ struct RenderOptions {
     std::string scene;
     std::string output;
     std::optional<int> width, height, max_depth;
+    double min_weight = RenderSettings{}.min_weight;
     int threads = 0;
     int stage = 6;
     bool stats = false;
@@ -58,6 +59,7 @@ int run_render(const RenderOptions& options) {
     RenderSettings settings;
     settings.stage = options.stage;
     settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);
+    settings.min_weight = options.min_weight;
     const Scene scene(std::move(loaded.data));
     const double load_seconds = seconds_since(load_start);
 
@@ -91,6 +93,7 @@ int run_render(const RenderOptions& options) {
 
 int main(int argc, char** argv) {
     CLI::App app{"whitted: a Whitted-style recursive ray tracer for NFF and P3F scenes."};
+    app.footer("Example: whitted render scenes/whitted_1980.p3f -o whitted_1980.png --stats");
     app.require_subcommand(1);
     RenderOptions options;
     CLI::App* render_command = app.add_subcommand("render", "Render a scene file (.nff or .p3f) to an image.");
@@ -104,6 +107,10 @@ int main(int argc, char** argv) {
     render_command->add_option("--max-depth", options.max_depth,
                                "Deepest ray in the ray tree; the eye ray is depth 1 (default: the scene's, else 5)")
         ->check(CLI::Range(1, 64));
+    render_command->add_option("--min-weight", options.min_weight,
+                               "Skip secondary rays whose accumulated weight is below this (Whitted's adaptive "
+                               "depth control; 0 = trace every ray down to the maximum depth; default 1/1024)")
+        ->check(CLI::Range(0.0, 1.0));
     render_command->add_option("--threads", options.threads, "Rendering threads; 0 = one per core (default 0)")
         ->check(CLI::Range(0, 1024));
     render_command->add_option("--stage", options.stage,

@@ -12,13 +12,24 @@ RayStats& RayStats::operator+=(const RayStats& other) {
     return *this;
 }
 
-Color Tracer::trace(const Ray& ray, int depth, RayKind kind) const {
+Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
+    const Color parent_weight = path_weight_;
+    const Color path_weight = parent_weight * weight;
+    if (kind != RayKind::eye && glm::all(glm::lessThan(path_weight, Color(settings_.min_weight)))) return Color(0.0);
     switch (kind) {
     case RayKind::eye: ++stats_.eye; break;
     case RayKind::shadow: ++stats_.shadow; break;
     case RayKind::reflected: ++stats_.reflected; break;
     case RayKind::refracted: ++stats_.refracted; break;
     }
+    path_weight_ = path_weight;
+    const Color color = shade(ray, depth);
+    path_weight_ = parent_weight;
+    return weight * color;
+}
+
+// The recursion of the slides: closest hit, local colour, then secondary rays.
+Color Tracer::shade(const Ray& ray, int depth) const {
     const std::optional<Hit> hit = scene_.closest_hit(ray);
     if (!hit) return scene_.background();
     const Material& material = scene_.material(*hit);
@@ -39,7 +50,8 @@ Color Tracer::trace(const Ray& ray, int depth, RayKind kind) const {
 }
 
 Color Tracer::trace_pixel(double x, double y) const {
-    return trace(primary_ray(scene_.camera(), x, y), 1, RayKind::eye);
+    path_weight_ = Color(1.0);
+    return trace(primary_ray(scene_.camera(), x, y), 1, RayKind::eye, Color(1.0));
 }
 
 bool Tracer::occluded(const Ray& ray, double distance) const {

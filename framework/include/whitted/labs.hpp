@@ -50,14 +50,14 @@ Color blinn_phong(const Tracer& tracer, const Hit& hit, const Vec3& wo);
 // ---- Lab 4: reflection (04_reflection.cpp) ----------------------------------
 /// The mirror direction wi of wo about the normal n: 2 (wo . n) n - wo.
 Vec3 mirror_direction(const Vec3& wo, const Vec3& n);
-/// The mirror-reflected light, traced one level deeper and weighted by the material's Ks.
+/// The mirror-reflected light: a ray traced one level deeper with the weight Ks (times the specular colour).
 Color reflection(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth);
 
 // ---- Lab 5: refraction (05_refraction.cpp) ----------------------------------
 /// The refracted direction for wo on the side of n (Snell's law), or nothing on
 /// total internal reflection.
 std::optional<Vec3> refracted_direction(const Vec3& wo, const Vec3& n, double eta_i, double eta_t);
-/// The refracted light, traced one level deeper and weighted by the material's T.
+/// The refracted light: a ray traced one level deeper with the weight T (none on total internal reflection).
 Color refraction(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth);
 
 // ---- Lab 6: Fresnel (06_fresnel.cpp) ----------------------------------------

@@ -29,6 +29,11 @@ struct RayStats {
 struct RenderSettings {
     int stage = 6;      // 1 ray casting, 2 shadows, 3 Blinn-Phong, 4 reflection, 5 refraction, 6 Fresnel
     int max_depth = 5;  // deepest ray in the ray tree; the eye ray is depth 1
+    // Whitted's adaptive depth control: a secondary ray whose accumulated weight
+    // (the product of the coefficients on its path from the eye) is below this in
+    // every channel is not traced. 1/1024 cannot move an 8-bit pixel by half a
+    // step for colours up to 2; 0 traces every ray down to max_depth.
+    double min_weight = 1.0 / 1024.0;
 };
 
 class Tracer {
@@ -40,8 +45,11 @@ class Tracer {
     const Scene& scene() const { return scene_; }
     const RenderSettings& settings() const { return settings_; }
 
-    /// The colour seen along `ray`, which is at `depth` in the ray tree (eye ray: 1).
-    Color trace(const Ray& ray, int depth, RayKind kind) const;
+    /// The colour seen along `ray`, which is at `depth` in the ray tree (eye ray:
+    /// 1), multiplied by `weight`: the coefficient (Ks, T, Kr...) with which this
+    /// ray adds to the colour of the ray it came from. Black when the ray's
+    /// accumulated weight is too small to matter (see RenderSettings::min_weight).
+    Color trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const;
 
     /// The colour of the pixel sample at viewport position (x, y) (see primary_ray).
     Color trace_pixel(double x, double y) const;
@@ -50,9 +58,12 @@ class Tracer {
     bool occluded(const Ray& ray, double distance) const;
 
   private:
+    Color shade(const Ray& ray, int depth) const;
+
     const Scene& scene_;
     const RenderSettings& settings_;
     RayStats& stats_;
+    mutable Color path_weight_{1.0}; // accumulated weight of the ray being traced
 };
 
 } // namespace whitted
