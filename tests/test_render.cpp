@@ -100,9 +100,12 @@ TEST(Render, AnExceptionInAnyThreadReachesTheCaller) {
 }
 
 TEST(Render, AdaptiveDepthControlSavesRaysWithoutChangingThePicture) {
-    // A glass sphere at depth 12 spawns two rays at every hit; pruning rays whose
+    // A hollow glass shell at depth 12 spawns two rays at every hit; pruning rays whose
     // accumulated weight is below 1/1024 must cut the ray count and stay within the image gate.
-    const Scene scene(effects_scene(48));
+    SceneData data = effects_scene(48);
+    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.7}, 2});
+    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.65, true}, 2});
+    const Scene scene(std::move(data));
     RenderSettings every_ray;
     every_ray.max_depth = 12;
     every_ray.min_weight = 0.0;
