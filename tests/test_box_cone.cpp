@@ -117,6 +117,15 @@ TEST(Cone, CylinderHasNoCapsSoRaysAlongTheAxisPassThrough) {
     EXPECT_FALSE(intersect_cone(make_ray({1, -5, 0}, {0, 1, 0}), kCylinder, {}));
 }
 
+TEST(Cone, TangentRayTouchesTheCylinderOnce) {
+    // The line y = 1, z = 1 grazes the wall at (0, 1, 1): B = 0 and C = 1 - 1 = 0, a double root t = 5.
+    const auto hit = intersect_cone(make_ray({-5, 1, 1}, {1, 0, 0}), kCylinder, {});
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->t, 5.0, 1e-12);
+    EXPECT_TRUE(near(hit->point, {0, 1, 1}, 1e-12));
+    EXPECT_FALSE(intersect_cone(make_ray({-5, 1, 1.000001}, {1, 0, 0}), kCylinder, {}));
+}
+
 TEST(Cone, HitsBeyondTheEndsOfTheAxisAreRejected) {
     EXPECT_FALSE(intersect_cone(make_ray({-5, 2.5, 0}, {1, 0, 0}), kCylinder, {}));
     EXPECT_FALSE(intersect_cone(make_ray({-5, -0.1, 0}, {1, 0, 0}), kCylinder, {}));

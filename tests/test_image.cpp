@@ -199,6 +199,12 @@ TEST_F(ImageFiles, SixteenBitBinaryPpmIsBigEndian) {
     EXPECT_EQ(image.pixels[0], Color(0.5, 1.0, 0.0));
 }
 
+TEST_F(ImageFiles, BinaryPpmMayHaveACommentRightAfterMaxval) {
+    // "255# note\n": the comment runs to the newline, which is the single byte that ends the header.
+    const Image image = read_image(raw("a.ppm", "P6 1 1 255# note\n" + std::string("\xFF\x00\x33", 3)));
+    EXPECT_EQ(image.pixels[0], Color(1.0, 0.0, 0.2));
+}
+
 TEST_F(ImageFiles, BigEndianGreyscalePfmFillsAllChannels) {
     // "Pf", positive scale: big-endian; 2 x 1, 0.5f = 3F 00 00 00, 2.0f = 40 00 00 00.
     const Image image = read_image(raw("a.pfm", std::string("Pf\n2 1\n1.0\n") + std::string("\x3F\0\0\0\x40\0\0\0", 8)));
@@ -224,6 +230,8 @@ TEST_F(ImageFiles, MalformedFilesGiveImageErrorsThatSayWhy) {
     expect_error(raw("bad.png", "not a png at all"), "PNG");
     expect_error(raw("cut.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16)), "PNG");
     expect_error(dir_, "unknown image extension");
+    fs::create_directory(file("folder.ppm"));
+    expect_error(file("folder.ppm"), "directory");
 }
 
 TEST_F(ImageFiles, TruncatedPngFromARealFileIsRejected) {

@@ -83,6 +83,10 @@ class HeaderReader {
 
     /// Consumes the single whitespace byte that ends a binary header; returns the data that follows.
     std::string_view binary_data() {
+        // A comment may still sit between the last header value and the whitespace that ends the header.
+        if (pos_ < bytes_.size() && bytes_[pos_] == '#') {
+            while (pos_ < bytes_.size() && bytes_[pos_] != '\n' && bytes_[pos_] != '\r') ++pos_;
+        }
         if (pos_ >= bytes_.size() || !is_space(bytes_[pos_])) {
             throw image_error(path_, "truncated: no pixel data after the header");
         }
