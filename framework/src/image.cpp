@@ -1,9 +1,134 @@
-#include "whitted/image.hpp"
+// Writing images as PNG, binary PPM (P6) or PFM, and the 8-bit encoding of colours.
+#include "image_format.hpp"
+
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
 
 namespace whitted {
-// Placeholder until image I/O lands.
-std::size_t count_non_finite(const Image&) { throw ImageError("count_non_finite() is not implemented yet"); }
-void write_image(const Image&, const std::filesystem::path&, Encoding) { throw ImageError("write_image() is not implemented yet"); }
-Image read_image(const std::filesystem::path&) { throw ImageError("read_image() is not implemented yet"); }
-unsigned char to_byte(double, Encoding) { return 0; }
+
+namespace detail {
+
+ImageError image_error(const std::filesystem::path& path, const std::string& what) {
+    return ImageError(path.string() + ": " + what);
+}
+
+ImageFormat image_format(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension == ".png") return ImageFormat::png;
+    if (extension == ".ppm") return ImageFormat::ppm;
+    if (extension == ".pfm") return ImageFormat::pfm;
+    throw image_error(path, "unknown image extension '" + path.extension().string() +
+                                "' (accepted: .png, .ppm, .pfm)");
+}
+
+} // namespace detail
+
+namespace {
+
+using detail::image_error;
+
+/// The image's 8-bit RGB samples, top row first.
+std::vector<unsigned char> to_bytes(const Image& image, Encoding encoding) {
+    std::vector<unsigned char> bytes;
+    bytes.reserve(image.pixels.size() * 3);
+    for (const Color& c : image.pixels) {
+        for (int k = 0; k < 3; ++k) bytes.push_back(to_byte(c[k], encoding));
+    }
+    return bytes;
+}
+
+/// Opens a binary output file, or throws naming the path.
+std::ofstream open_for_writing(const std::filesystem::path& path) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out) throw image_error(path, "cannot open for writing");
+    return out;
+}
+
+/// Flushes and closes the file, throwing when any write failed (disk full, I/O error).
+void finish_writing(std::ofstream& out, const std::filesystem::path& path) {
+    out.flush();
+    out.close();
+    if (!out) throw image_error(path, "write failed");
+}
+
+/// Writes a binary PPM (P6, maxval 255).
+void write_ppm(const Image& image, const std::filesystem::path& path, Encoding encoding) {
+    const std::vector<unsigned char> bytes = to_bytes(image, encoding);
+    std::ofstream out = open_for_writing(path);
+    out << "P6\n" << image.width << ' ' << image.height << "\n255\n";
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    finish_writing(out, path);
+}
+
+/// Writes an RGB PFM: little-endian floats (scale -1.0), bottom row first as the format requires.
+void write_pfm(const Image& image, const std::filesystem::path& path) {
+    std::vector<unsigned char> bytes;
+    bytes.reserve(image.pixels.size() * 12);
+    for (int y = image.height - 1; y >= 0; --y) {
+        for (int x = 0; x < image.width; ++x) {
+            for (int k = 0; k < 3; ++k) {
+                const auto bits = std::bit_cast<std::uint32_t>(static_cast<float>(image.at(x, y)[k]));
+                for (int shift = 0; shift < 32; shift += 8) bytes.push_back(static_cast<unsigned char>(bits >> shift));
+            }
+        }
+    }
+    std::ofstream out = open_for_writing(path);
+    out << "PF\n" << image.width << ' ' << image.height << "\n-1.0\n";
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    finish_writing(out, path);
+}
+
+/// Writes an 8-bit RGB PNG through stb_image_write.
+void write_png(const Image& image, const std::filesystem::path& path, Encoding encoding) {
+    const std::vector<unsigned char> bytes = to_bytes(image, encoding);
+    if (stbi_write_png(path.string().c_str(), image.width, image.height, 3, bytes.data(), image.width * 3) == 0) {
+        throw image_error(path, "cannot write PNG file");
+    }
+}
+
+} // namespace
+
+std::size_t count_non_finite(const Image& image) {
+    return static_cast<std::size_t>(
+        std::count_if(image.pixels.begin(), image.pixels.end(), [](const Color& c) { return !is_finite(c); }));
+}
+
+unsigned char to_byte(double value, Encoding encoding) {
+    // Clamp to [0, 1]; the negated test also sends NaN to 0, so the cast below is always defined.
+    double v = !(value > 0.0) ? 0.0 : std::min(value, 1.0);
+    // The sRGB transfer function (OETF): linear near black, a 1/2.4 power above 0.0031308.
+    if (encoding == Encoding::srgb) {
+        v = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+    }
+    return static_cast<unsigned char>(std::lround(v * 255.0));
+}
+
+void write_image(const Image& image, const std::filesystem::path& path, Encoding encoding) {
+    const detail::ImageFormat format = detail::image_format(path);
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != static_cast<std::size_t>(image.width) * image.height) {
+        throw image_error(path, "cannot write an empty or inconsistent image (" + std::to_string(image.width) + "x" +
+                                    std::to_string(image.height) + ", " + std::to_string(image.pixels.size()) +
+                                    " pixels)");
+    }
+    if (const std::size_t bad = count_non_finite(image); bad > 0) {
+        throw image_error(path, "refusing to write " + std::to_string(bad) + " pixel(s) with NaN or infinite values");
+    }
+    switch (format) {
+    case detail::ImageFormat::png: write_png(image, path, encoding); break;
+    case detail::ImageFormat::ppm: write_ppm(image, path, encoding); break;
+    case detail::ImageFormat::pfm: write_pfm(image, path); break;
+    }
+}
+
 } // namespace whitted

@@ -3,7 +3,6 @@
 #include "whitted/primitive.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 namespace whitted {
 
@@ -65,8 +64,54 @@ std::optional<Hit> intersect_box(const Ray& ray, const Box& box, Interval t_rang
     return std::nullopt;
 }
 
-std::optional<Hit> intersect_cone(const Ray&, const Cone&, Interval) {
-    throw std::logic_error("intersect_cone() is not implemented yet");
+std::optional<Hit> intersect_cone(const Ray& ray, const Cone& cone, Interval t_range) {
+    // Work along the unit axis a: a point's height s = (p - base) . a runs from 0 to length,
+    // and the surface radius there is r(s) = base_radius + slope s.
+    const Vec3 axis = cone.apex - cone.base;
+    const double length = glm::length(axis);
+    if (!(length > 0.0)) return std::nullopt; // degenerate cone: no surface
+    const Vec3 a = axis / length;
+    const double slope = (cone.apex_radius - cone.base_radius) / length;
+    // Start the ray at its point nearest the cone's middle, so far-away origins keep their digits.
+    const double t_shift = glm::dot(0.5 * (cone.base + cone.apex) - ray.origin, ray.direction) /
+                           glm::dot(ray.direction, ray.direction);
+    const Vec3 w = ray.origin + t_shift * ray.direction - cone.base;
+    // Split the start point and the direction into heights along a and parts across it.
+    const double w_a = glm::dot(w, a), d_a = glm::dot(ray.direction, a);
+    const Vec3 w_perp = w - w_a * a, d_perp = ray.direction - d_a * a;
+    // |w_perp + t d_perp|^2 = (r0 + slope d_a t)^2 with r0 = r(w_a):  A t^2 + 2 B t + C = 0.
+    const double r0 = cone.base_radius + slope * w_a;
+    const double qa = glm::dot(d_perp, d_perp) - slope * slope * d_a * d_a;
+    const double qb = glm::dot(w_perp, d_perp) - slope * d_a * r0;
+    const double qc = glm::dot(w_perp, w_perp) - r0 * r0;
+    double roots[2];
+    if (qa == 0.0) {
+        // Parallel to the axis of a cylinder (no hit) or to a line of the cone (one root).
+        if (qb == 0.0) return std::nullopt;
+        roots[0] = roots[1] = -qc / (2.0 * qb);
+    } else {
+        const double discriminant = qb * qb - qa * qc;
+        if (discriminant < 0.0) return std::nullopt;
+        // Stable roots: q = -(B + sign(B) sqrt(disc)), t = q / A and C / q.
+        const double q = -(qb + std::copysign(std::sqrt(discriminant), qb));
+        roots[0] = q / qa;
+        roots[1] = q != 0.0 ? qc / q : roots[0];
+        if (roots[0] > roots[1]) std::swap(roots[0], roots[1]);
+    }
+    for (const double root : roots) {
+        const double t = root + t_shift;
+        const double s = w_a + root * d_a;
+        // Only the part of the surface between base and apex exists (this also drops the mirrored nappe).
+        if (!t_range.surrounds(t) || s < 0.0 || s > length) continue;
+        // Outward normal: the gradient of |p_perp|^2 - r(s)^2, i.e. p_perp - r(s) slope a.
+        const Vec3 p_perp = w_perp + root * d_perp;
+        Vec3 outward = p_perp - (cone.base_radius + slope * s) * slope * a;
+        const double norm = glm::length(outward);
+        // At the tip of a pointed cone the gradient vanishes: use the axis, pointing out of the tip.
+        outward = norm > 0.0 ? outward / norm : (slope < 0.0 ? a : -a);
+        return make_hit(ray, t, cone.inward ? -outward : outward);
+    }
+    return std::nullopt;
 }
 
 } // namespace whitted

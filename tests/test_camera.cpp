@@ -1,0 +1,124 @@
+// The camera of the slides: the frame from eye / at / up, the view-plane size,
+// and the primary rays through pixel centres (primary_ray from labs.hpp).
+#include "test_helpers.hpp"
+#include "whitted/camera.hpp"
+#include "whitted/labs.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace whitted;
+using whitted::testing_helpers::near;
+
+namespace {
+
+/// The angle in degrees between two unit vectors.
+double angle_degrees(const Vec3& a, const Vec3& b) { return std::acos(glm::dot(a, b)) * 180.0 / kPi; }
+
+} // namespace
+
+TEST(Camera, FrameLooksDownMinusZWhenTheEyeIsOnThePositiveZAxis) {
+    // eye - at = (0, 0, 5): ze = (0, 0, 1); xe = y x z = (1, 0, 0); ye = z x x = (0, 1, 0).
+    const Camera camera = Camera::create({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45.0, 64, 64);
+    EXPECT_TRUE(near(camera.ze, {0, 0, 1}));
+    EXPECT_TRUE(near(camera.xe, {1, 0, 0}));
+    EXPECT_TRUE(near(camera.ye, {0, 1, 0}));
+    EXPECT_DOUBLE_EQ(camera.df, 5.0);
+}
+
+TEST(Camera, FrameFollowsTheSlidesForAnObliqueView) {
+    // eye - at = (-3, -4, 0), |.| = 5: ze = (-0.6, -0.8, 0).
+    // xe = normalize(up x ze) with up = (0, 0, 1): (0*0 - 1*(-0.8), 1*(-0.6) - 0*0, 0) = (0.8, -0.6, 0).
+    // ye = ze x xe = (0, 0, 0.36 + 0.64) = (0, 0, 1).
+    const Camera camera = Camera::create({1, 2, 3}, {4, 6, 3}, {0, 0, 1}, 45.0, 64, 64);
+    EXPECT_DOUBLE_EQ(camera.df, 5.0);
+    EXPECT_TRUE(near(camera.ze, {-0.6, -0.8, 0}));
+    EXPECT_TRUE(near(camera.xe, {0.8, -0.6, 0}));
+    EXPECT_TRUE(near(camera.ye, {0, 0, 1}));
+}
+
+TEST(Camera, UpNeedNotBePerpendicularNorUnitLength) {
+    // up = (0, 2, 3) tilts towards the eye; only its part across ze matters:
+    // up x ze = (2, 0, 0) -> xe = (1, 0, 0), ye = (0, 1, 0): the frame is orthonormal and right-handed.
+    const Camera camera = Camera::create({0, 0, 5}, {0, 0, 0}, {0, 2, 3}, 45.0, 64, 64);
+    EXPECT_TRUE(near(camera.xe, {1, 0, 0}));
+    EXPECT_TRUE(near(camera.ye, {0, 1, 0}));
+    EXPECT_TRUE(near(glm::cross(camera.xe, camera.ye), camera.ze));
+    EXPECT_NEAR(glm::length(camera.ye), 1.0, 1e-15);
+    EXPECT_NEAR(glm::dot(camera.ye, camera.ze), 0.0, 1e-15);
+}
+
+TEST(Camera, ViewPlaneHeightIsTwiceTheDistanceTimesTanHalfFov) {
+    // df = 3, fovy = 60: h = 2 * 3 * tan(30 deg) = 6 / sqrt(3) = 2 sqrt(3); square image: w = h.
+    const Camera camera = Camera::create({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 60.0, 100, 100);
+    EXPECT_NEAR(camera.h, 2.0 * std::sqrt(3.0), 1e-12);
+    EXPECT_NEAR(camera.w, camera.h, 1e-12);
+}
+
+TEST(Camera, ViewPlaneWidthFollowsTheAspectRatio) {
+    // df = 2, fovy = 90: h = 2 * 2 * tan(45 deg) = 4; 200 x 100 pixels: w = 200 / 100 * 4 = 8.
+    const Camera camera = Camera::create({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, 90.0, 200, 100);
+    EXPECT_NEAR(camera.h, 4.0, 1e-12);
+    EXPECT_NEAR(camera.w, 8.0, 1e-12);
+}
+
+TEST(PrimaryRay, StartsAtTheEyeWithAUnitDirection) {
+    const Camera camera = Camera::create({1, 2, 3}, {4, 6, 3}, {0, 0, 1}, 50.0, 40, 30);
+    const Ray ray = primary_ray(camera, 7.5, 21.5);
+    EXPECT_TRUE(near(ray.origin, camera.eye));
+    EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-15);
+}
+
+TEST(PrimaryRay, CentrePixelOfAnOddResolutionLooksExactlyAtTheTarget) {
+    // Pixel (2, 1) of 5 x 3 has its centre at (2.5, 1.5): x / ResX - 1/2 = 0 and y / ResY - 1/2 = 0,
+    // so d = normalize(-df ze) = (at - eye) / df, and eye + df d = at.
+    const Camera camera = Camera::create({1, 2, 3}, {4, 6, 3}, {0, 0, 1}, 50.0, 5, 3);
+    const Ray ray = primary_ray(camera, 2.5, 1.5);
+    EXPECT_TRUE(near(ray.direction, {0.6, 0.8, 0}, 1e-15));
+    EXPECT_TRUE(near(ray.at(camera.df), camera.at, 1e-14));
+}
+
+TEST(PrimaryRay, BottomLeftPixelCentreGoesDownAndLeft) {
+    // df = 1, fovy = 90, 2 x 2: h = w = 2. Pixel (0, 0), centre (0.5, 0.5):
+    // w (0.25 - 0.5) = -0.5 and h (0.25 - 0.5) = -0.5, so d = normalize(-0.5, -0.5, -1) (y counts upwards).
+    const Camera camera = Camera::create({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 90.0, 2, 2);
+    const Ray ray = primary_ray(camera, 0.5, 0.5);
+    EXPECT_TRUE(near(ray.direction, glm::normalize(Vec3(-0.5, -0.5, -1.0)), 1e-15));
+    const Ray top_right = primary_ray(camera, 1.5, 1.5);
+    EXPECT_TRUE(near(top_right.direction, glm::normalize(Vec3(0.5, 0.5, -1.0)), 1e-15));
+}
+
+TEST(PrimaryRay, TopAndBottomEdgesOfTheViewPlaneSpanTheVerticalFov) {
+    // At y = 0 and y = ResY the rays meet the view plane h / 2 below and above `at`, and
+    // tan(angle / 2) = (h / 2) / df = tan(fovy / 2): the angle between them is fovy.
+    const Camera camera = Camera::create({3, 1, 4}, {0, 0, 0}, {0, 1, 0}, 35.0, 120, 80);
+    const Ray bottom = primary_ray(camera, 60.0, 0.0);
+    const Ray top = primary_ray(camera, 60.0, 80.0);
+    EXPECT_NEAR(angle_degrees(bottom.direction, top.direction), 35.0, 1e-10);
+}
+
+TEST(PrimaryRay, NonSquareImagesWidenTheHorizontalFov) {
+    // df = 1, fovy = 90, 200 x 100: h = 2, w = 4. The left and right edges at mid height lie
+    // 2 to each side of `at`: the horizontal angle is 2 atan(2 / 1), wider than the vertical 90 degrees.
+    const Camera camera = Camera::create({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 90.0, 200, 100);
+    const Ray left = primary_ray(camera, 0.0, 50.0);
+    const Ray right = primary_ray(camera, 200.0, 50.0);
+    EXPECT_NEAR(angle_degrees(left.direction, right.direction), 2.0 * std::atan(2.0) * 180.0 / kPi, 1e-10);
+    EXPECT_TRUE(near(left.direction, glm::normalize(Vec3(-2, 0, -1)), 1e-15));
+}
+
+TEST(Camera, WithResolutionKeepsTheVerticalFovAndWidensTheWidth) {
+    // Same eye, at, up and fovy: the frame and h stay; w = 300 / 100 h.
+    const Camera square = Camera::create({1, 5, 2}, {0, 1, 0}, {0, 1, 0}, 40.0, 100, 100);
+    const Camera wide = square.with_resolution(300, 100);
+    EXPECT_EQ(wide.res_x, 300);
+    EXPECT_EQ(wide.res_y, 100);
+    EXPECT_DOUBLE_EQ(wide.fovy, 40.0);
+    EXPECT_DOUBLE_EQ(wide.h, square.h);
+    EXPECT_NEAR(wide.w, 3.0 * square.h, 1e-12);
+    EXPECT_TRUE(near(wide.xe, square.xe, 0.0));
+    EXPECT_TRUE(near(wide.ze, square.ze, 0.0));
+    // The centre ray still looks at `at`.
+    EXPECT_TRUE(near(primary_ray(wide, 150.0, 50.0).direction, -square.ze, 1e-15));
+}
