@@ -144,6 +144,7 @@ std::vector<TriangleIndices> triangulate_polygon(std::span<const Point3> vertice
     }
     const double extent = max_abs_component(high - low);
     if (!(glm::length(normal) > 1e-12 * extent * extent)) return {};
+    if (vertices.size() == 3) return {{0, 1, 2}}; // keeps the corners in the order they were written
 
     // Project on the plane of the two axes other than the normal's dominant one, in
     // cyclic order (x,y), (y,z) or (z,x); swap them when needed so the polygon runs counter-clockwise.
@@ -155,8 +156,7 @@ std::vector<TriangleIndices> triangulate_polygon(std::span<const Point3> vertice
     points.reserve(vertices.size());
     for (const Point3& p : vertices) points.emplace_back(p[u] - vertices[0][u], p[v] - vertices[0][v]);
 
-    std::vector<TriangleIndices> triangles = EarClipper(std::move(points)).run();
-    return triangles;
+    return EarClipper(std::move(points)).run();
 }
 
 } // namespace whitted::detail

@@ -22,6 +22,9 @@ std::string lower_case(std::string text) {
 
 LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& limits) {
     const std::string name = path.string();
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+        throw SceneError(name + ": cannot open a directory as a scene file");
     const std::string extension = lower_case(path.extension().string());
     Dialect dialect = Dialect::nff;
     if (extension == ".p3f") {
@@ -29,9 +32,6 @@ LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& lim
     } else if (extension != ".nff") {
         throw SceneError(name + ": unknown scene format '" + path.extension().string() + "' (expected .nff or .p3f)");
     }
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error))
-        throw SceneError(name + ": cannot open a directory as a scene file");
     std::ifstream file(path, std::ios::binary);
     if (!file) throw SceneError(name + ": cannot open the file (missing or unreadable)");
     std::ostringstream text;
