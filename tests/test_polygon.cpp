@@ -158,3 +158,42 @@ TEST(Polygon, FewerThanThreeDistinctPointsGiveNoTriangles) {
     EXPECT_TRUE(triangulate_polygon(in_xy_plane({{0, 0}, {1, 1}})).empty());
     EXPECT_TRUE(triangulate_polygon(in_xy_plane({{1, 1}, {1, 1}, {1, 1}})).empty());
 }
+
+TEST(Polygon, CombWithAThousandTeethIsCoveredWithoutLeavingIt) {
+    // A spine 0 <= y <= 1 under teeth x in [2t + 1, 2t + 2], y up to 10, outlined counter-clockwise.
+    std::vector<Vec2> comb{{0, 0}, {2000, 0}};
+    for (int t = 999; t >= 0; --t) comb.insert(comb.end(), {{2 * t + 2, 10}, {2 * t + 1, 10}, {2 * t + 1, 1}, {2 * t, 1}});
+    const auto vertices = in_xy_plane(comb);
+    const auto triangles = triangulate_polygon(vertices);
+    expect_exact_cover(vertices, triangles);
+    expect_centroids_inside(comb, triangles);
+}
+
+TEST(Polygon, RandomStarShapedPolygonWithTwoThousandVerticesIsCovered) {
+    std::vector<Vec2> outline;
+    unsigned state = 12345;
+    for (int i = 0; i < 2000; ++i) {
+        state = state * 1103515245u + 12345u;
+        const double angle = 2.0 * kPi * i / 2000.0;
+        const double radius = 1.0 + (state >> 16) % 1000 / 400.0;
+        outline.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+    }
+    const auto triangles = triangulate_polygon(in_xy_plane(outline));
+    expect_exact_cover(in_xy_plane(outline), triangles);
+    expect_centroids_inside(outline, triangles);
+}
+
+TEST(Polygon, SelfIntersectingPolygonEndsWithTrianglesFacingOneWay) {
+    // Not a valid polygon (it winds twice around the centre), but a hostile file must
+    // not hang the loader or give triangles facing backwards.
+    std::vector<Point3> twice_around;
+    for (int i = 0; i < 999; ++i) {
+        const double angle = 4.0 * kPi * i / 999.0;
+        const double radius = 1.0 + i / 500.0;
+        twice_around.emplace_back(radius * std::cos(angle), radius * std::sin(angle), 0.0);
+    }
+    const auto triangles = triangulate_polygon(twice_around);
+    EXPECT_FALSE(triangles.empty());
+    for (const auto& [i, j, k] : triangles)
+        EXPECT_GT(glm::cross(twice_around[j] - twice_around[i], twice_around[k] - twice_around[i]).z, 0.0);
+}

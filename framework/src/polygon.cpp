@@ -1,5 +1,6 @@
 #include "polygon.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace whitted::detail {
@@ -16,10 +17,52 @@ bool inside_or_on(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
     return cross2(a, b, p) >= 0.0 && cross2(b, c, p) >= 0.0 && cross2(c, a, p) >= 0.0;
 }
 
+/// The corners that are not convex, filed in a uniform grid: only they can lie
+/// inside an ear, and the grid finds those near a candidate ear quickly.
+class CornerGrid {
+  public:
+    CornerGrid(const std::vector<Vec2>& points, std::size_t expected) {
+        low_ = high_ = points[0];
+        for (const Vec2& p : points) {
+            low_ = glm::min(low_, p);
+            high_ = glm::max(high_, p);
+        }
+        side_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(static_cast<double>(expected))), 1, 1024);
+        cells_.resize(side_ * side_);
+    }
+
+    void insert(std::size_t corner, const Vec2& p) { cells_[cell_x(p.x) + side_ * cell_y(p.y)].push_back(corner); }
+
+    /// Calls keep(corner) for every filed corner in the cells the box touches; entries for which it returns false are dropped.
+    template <class Keep> void visit(const Vec2& box_low, const Vec2& box_high, Keep keep) {
+        for (std::size_t y = cell_y(box_low.y); y <= cell_y(box_high.y); ++y) {
+            for (std::size_t x = cell_x(box_low.x); x <= cell_x(box_high.x); ++x) {
+                std::vector<std::size_t>& cell = cells_[x + side_ * y];
+                std::size_t kept = 0;
+                for (const std::size_t corner : cell)
+                    if (keep(corner)) cell[kept++] = corner;
+                cell.resize(kept);
+            }
+        }
+    }
+
+  private:
+    std::size_t cell(double value, double low, double high) const {
+        const double t = high > low ? (value - low) / (high - low) : 0.0;
+        return std::min(side_ - 1, static_cast<std::size_t>(std::max(0.0, t * static_cast<double>(side_))));
+    }
+    std::size_t cell_x(double x) const { return cell(x, low_.x, high_.x); }
+    std::size_t cell_y(double y) const { return cell(y, low_.y, high_.y); }
+
+    Vec2 low_, high_;
+    std::size_t side_ = 1;
+    std::vector<std::vector<std::size_t>> cells_;
+};
+
 /// Ear clipping over a circular doubly linked list of the projected vertices.
 class EarClipper {
   public:
-    explicit EarClipper(std::vector<Vec2> points) : points_(std::move(points)) {
+    explicit EarClipper(std::vector<Vec2> points) : points_(std::move(points)), grid_(points_, points_.size()) {
         const std::size_t n = points_.size();
         prev_.resize(n);
         next_.resize(n);
@@ -28,9 +71,9 @@ class EarClipper {
             next_[i] = (i + 1) % n;
         }
         alive_.assign(n, true);
-        listed_.assign(n, false);
+        filed_.assign(n, false);
         remaining_ = n;
-        for (std::size_t i = 0; i < n; ++i) note_if_not_convex(i);
+        for (std::size_t i = 0; i < n; ++i) file_if_not_convex(i);
     }
 
     std::vector<TriangleIndices> run() {
@@ -47,7 +90,7 @@ class EarClipper {
             } else if (turn > 0.0 && (is_ear(a, corner, c) || stalled > remaining_)) {
                 // After a full lap without an ear (self-intersection or rounding), clip any convex corner.
                 triangles.push_back({a, corner, c});
-                corner = remove(corner);
+                corner = next_[remove(corner)]; // moving on past c avoids growing a fan of slivers around a
                 stalled = 0;
             } else if (stalled > 2 * remaining_) {
                 break; // no convex corner left: what remains has no area
@@ -71,31 +114,27 @@ class EarClipper {
         return std::abs(turn) <= 1e-12 * scale ? 0.0 : turn;
     }
 
-    void note_if_not_convex(std::size_t i) {
-        if (!listed_[i] && turn_at(i) <= 0.0) {
-            listed_[i] = true;
-            not_convex_.push_back(i);
+    void file_if_not_convex(std::size_t i) {
+        if (!filed_[i] && turn_at(i) <= 0.0) {
+            filed_[i] = true;
+            grid_.insert(i, points_[i]);
         }
     }
 
-    /// True when no other corner lies in the triangle a, b, c. Only corners that
-    /// are not convex can lie inside it, so only those are tested.
+    /// True when no other corner lies in the triangle a, b, c (only corners that are not convex can).
     bool is_ear(std::size_t a, std::size_t b, std::size_t c) {
         const Vec2 &pa = points_[a], &pb = points_[b], &pc = points_[c];
-        std::size_t kept = 0;
         bool ear = true;
-        for (const std::size_t i : not_convex_) {
-            if (!alive_[i] || turn_at(i) > 0.0) {
-                listed_[i] = false; // gone or convex now: forget it
-                continue;
+        grid_.visit(glm::min(pa, glm::min(pb, pc)), glm::max(pa, glm::max(pb, pc)), [&](std::size_t i) {
+            if (!alive_[i] || turn_at(i) > 0.0) { // gone or convex now: forget it
+                filed_[i] = false;
+                return false;
             }
-            not_convex_[kept++] = i;
-            if (!ear || i == a || i == b || i == c) continue;
+            if (!ear || i == a || i == b || i == c) return true;
             const Vec2& p = points_[i];
-            if (p == pa || p == pb || p == pc) continue;
-            if (inside_or_on(p, pa, pb, pc)) ear = false;
-        }
-        not_convex_.resize(kept);
+            if (p != pa && p != pb && p != pc && inside_or_on(p, pa, pb, pc)) ear = false;
+            return true;
+        });
         return ear;
     }
 
@@ -106,15 +145,15 @@ class EarClipper {
         prev_[c] = a;
         alive_[i] = false;
         --remaining_;
-        note_if_not_convex(a);
-        note_if_not_convex(c);
+        file_if_not_convex(a);
+        file_if_not_convex(c);
         return c;
     }
 
     std::vector<Vec2> points_;
+    CornerGrid grid_;
     std::vector<std::size_t> prev_, next_;
-    std::vector<bool> alive_, listed_;
-    std::vector<std::size_t> not_convex_; // may hold stale entries, pruned by is_ear
+    std::vector<bool> alive_, filed_;
     std::size_t remaining_ = 0;
 };
 
