@@ -159,6 +159,14 @@ TEST(NffLoader, PolygonWithNormalsGivesTrianglesWithUnitVertexNormals) {
     expect_vec(normals[2], {0, 0, 1});
 }
 
+TEST(NffLoader, HugeAndTinyVertexNormalsStillBecomeUnitLength) {
+    const auto scene = nff_body("pp 3\n0 0 0 0 0 1e300\n1 0 0 0 1e300 1e300\n0 1 0 0 0 1e-300\n");
+    const VertexNormals& normals = scene.data.vertex_normals.at(0);
+    expect_vec(normals[0], {0, 0, 1});
+    expect_vec(normals[1], {0, std::sqrt(0.5), std::sqrt(0.5)});
+    expect_vec(normals[2], {0, 0, 1});
+}
+
 TEST(NffLoader, FlatPpTriangleFromATessellatorIsSkippedWithAWarning) {
     const auto scene = nff_body("pp 3\n0 0 0 0 0 1\n1 0 0 0 0 1\n2 0 0 0 0 1\n");
     EXPECT_TRUE(scene.data.primitives.empty());

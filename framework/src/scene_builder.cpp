@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 namespace whitted::detail {
 
@@ -22,8 +21,7 @@ Token expect_word(TokenStream& tokens, std::string_view word, std::string_view c
 
 } // namespace
 
-SceneBuilder::SceneBuilder(TokenStream& tokens, Dialect dialect, const SceneLimits& limits)
-    : tokens_(tokens), dialect_(dialect), limits_(limits) {}
+SceneBuilder::SceneBuilder(TokenStream& tokens, const SceneLimits& limits) : tokens_(tokens), limits_(limits) {}
 
 void SceneBuilder::warn(const Token& at, const std::string& message) {
     scene_.warnings.push_back(tokens_.where(at) + ": warning: " + message);
@@ -156,14 +154,11 @@ void SceneBuilder::add_polygon(const Token& at, std::span<const Point3> vertices
     }
 }
 
-std::size_t SceneBuilder::vertex_count(NumberReader& numbers, const char* what) {
-    return static_cast<std::size_t>(numbers.integer(what, 3, static_cast<long long>(limits_.max_polygon_vertices)));
-}
-
 void SceneBuilder::read_polygon(const Token& keyword, bool with_normals) {
     const std::string entity = quoted(keyword.text);
     NumberReader numbers(tokens_, entity, 1);
-    const std::size_t count = vertex_count(numbers, "the number of polygon vertices");
+    const auto most = static_cast<long long>(limits_.max_polygon_vertices);
+    const auto count = static_cast<std::size_t>(numbers.integer("the number of polygon vertices", 3, most));
     numbers.expect_more(static_cast<long long>(count) * (with_normals ? 6 : 3));
     std::vector<Point3> vertices;
     std::vector<Vec3> normals;
@@ -172,9 +167,9 @@ void SceneBuilder::read_polygon(const Token& keyword, bool with_normals) {
         vertices.push_back(numbers.vec3("a polygon vertex"));
         if (!with_normals) continue;
         const Vec3 normal = numbers.vec3("a vertex normal");
-        if (glm::length(normal) == 0.0)
-            tokens_.fail(numbers.last(), "expected a non-zero vertex normal, found 0 0 0");
-        normals.push_back(glm::normalize(normal));
+        const double largest = max_abs_component(normal);
+        if (largest == 0.0) tokens_.fail(numbers.last(), "expected a non-zero vertex normal, found 0 0 0");
+        normals.push_back(glm::normalize(normal / largest)); // scaled first: no overflow for 1e300, no underflow for 1e-300
     }
     // Tessellators write zero-area `pp` triangles (the SPD teapot does): those are skipped.
     add_polygon(keyword, vertices, normals, with_normals);

@@ -10,6 +10,8 @@
 
 #include "whitted/scene_loader.hpp"
 
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,7 +30,7 @@ struct Viewpoint {
 
 class SceneBuilder {
   public:
-    SceneBuilder(TokenStream& tokens, Dialect dialect, const SceneLimits& limits);
+    SceneBuilder(TokenStream& tokens, const SceneLimits& limits);
 
     TokenStream& tokens() { return tokens_; }
     SceneData& data() { return scene_.data; }
@@ -67,10 +69,8 @@ class SceneBuilder {
 
   private:
     void read_checker(const Token& keyword);
-    std::size_t vertex_count(NumberReader& numbers, const char* what);
 
     TokenStream& tokens_;
-    Dialect dialect_;
     SceneLimits limits_;
     LoadedScene scene_;
     bool has_camera_ = false;

@@ -71,7 +71,7 @@ void read_cone(SceneBuilder& scene, const Token& keyword) {
 } // namespace
 
 LoadedScene parse_nff(TokenStream& tokens, const SceneLimits& limits) {
-    SceneBuilder scene(tokens, Dialect::nff, limits);
+    SceneBuilder scene(tokens, limits);
     for (Token keyword = tokens.next(); !keyword.is_end(); keyword = tokens.next()) {
         const std::string_view word = keyword.text;
         if (scene.read_shared(keyword)) continue;

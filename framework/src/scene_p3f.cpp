@@ -105,7 +105,7 @@ void read_mesh(SceneBuilder& scene, const SceneLimits& limits) {
 } // namespace
 
 LoadedScene parse_p3f(TokenStream& tokens, const SceneLimits& limits) {
-    SceneBuilder scene(tokens, Dialect::p3f, limits);
+    SceneBuilder scene(tokens, limits);
     for (Token keyword = tokens.next(); !keyword.is_end(); keyword = tokens.next()) {
         const std::string_view word = keyword.text;
         if (scene.read_shared(keyword)) continue;
