@@ -1,7 +1,49 @@
 #include "whitted/scene_loader.hpp"
 
+#include "scene_builder.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
 namespace whitted {
-// Placeholder until the loaders land.
-LoadedScene load_scene(const std::filesystem::path&, const SceneLimits&) { throw SceneError("load_scene() is not implemented yet"); }
-LoadedScene parse_scene(std::string_view, Dialect, std::string_view, const SceneLimits&) { throw SceneError("parse_scene() is not implemented yet"); }
+
+namespace {
+
+std::string lower_case(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+} // namespace
+
+LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& limits) {
+    const std::string name = path.string();
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+        throw SceneError(name + ": cannot open a directory as a scene file");
+    const std::string extension = lower_case(path.extension().string());
+    Dialect dialect = Dialect::nff;
+    if (extension == ".p3f") {
+        dialect = Dialect::p3f;
+    } else if (extension != ".nff") {
+        throw SceneError(name + ": unknown scene format '" + path.extension().string() + "' (expected .nff or .p3f)");
+    }
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw SceneError(name + ": cannot open the file (missing or unreadable)");
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (file.bad()) throw SceneError(name + ": cannot read the file");
+    return parse_scene(text.str(), dialect, name, limits);
+}
+
+LoadedScene parse_scene(std::string_view text, Dialect dialect, std::string_view file_name,
+                        const SceneLimits& limits) {
+    detail::TokenStream tokens(text, file_name);
+    return dialect == Dialect::nff ? detail::parse_nff(tokens, limits) : detail::parse_p3f(tokens, limits);
+}
+
 } // namespace whitted

@@ -1,0 +1,189 @@
+#include "scene_tokens.hpp"
+
+#include "whitted/scene_loader.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+namespace whitted::detail {
+
+namespace {
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
+
+bool starts_with_word(std::string_view text, std::string_view word) {
+    if (text.size() < word.size()) return false;
+    for (std::size_t i = 0; i < word.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(text[i])) != word[i]) return false;
+    return true;
+}
+
+/// Drops one leading '+', which std::from_chars does not accept.
+std::string_view without_plus(std::string_view text) {
+    if (text.size() > 1 && text[0] == '+' && text[1] != '+' && text[1] != '-') text.remove_prefix(1);
+    return text;
+}
+
+enum class Parsed { ok, malformed, not_finite };
+
+/// Parses the whole token as a double; values too small for a double become 0 (or a subnormal).
+Parsed parse_double(std::string_view text, double& value) {
+    text = without_plus(text);
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (end != text.data() + text.size()) return Parsed::malformed;
+    if (error == std::errc::result_out_of_range) {
+        // from_chars reports underflow and overflow alike; strtod tells them apart.
+        value = std::strtod(std::string(text).c_str(), nullptr);
+        if (std::isinf(value)) return Parsed::not_finite;
+    } else if (error != std::errc()) {
+        return Parsed::malformed;
+    }
+    return std::isfinite(value) ? Parsed::ok : Parsed::not_finite;
+}
+
+std::string numbers_phrase(long long count) {
+    return count == 1 ? "1 more number" : std::to_string(count) + " more numbers";
+}
+
+} // namespace
+
+bool looks_like_number(std::string_view text) {
+    if (!text.empty() && (text[0] == '+' || text[0] == '-')) text.remove_prefix(1);
+    if (text.empty()) return false;
+    if (std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.') return true;
+    return starts_with_word(text, "nan") || starts_with_word(text, "inf");
+}
+
+std::string format_number(double value) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+std::string quoted(std::string_view word) {
+    std::string text;
+    text.reserve(word.size() + 2);
+    text += '\'';
+    text += word;
+    text += '\'';
+    return text;
+}
+
+std::string describe(const Token& token) {
+    if (token.is_end()) return "end of file";
+    return quoted(token.text);
+}
+
+TokenStream::TokenStream(std::string_view text, std::string_view file_name)
+    : text_(text), file_name_(file_name) {}
+
+const Token& TokenStream::peek() {
+    if (!peeked_) peeked_ = scan();
+    return *peeked_;
+}
+
+Token TokenStream::next() {
+    const Token token = peek();
+    peeked_.reset();
+    return token;
+}
+
+Token TokenStream::scan() {
+    // Skip blanks and comments, counting lines and columns as we go.
+    while (pos_ < text_.size()) {
+        const char c = text_[pos_];
+        if (c == '#') {
+            while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_, ++column_;
+        } else if (c == '\n') {
+            ++pos_, ++line_, column_ = 1;
+        } else if (is_space(c)) {
+            ++pos_, ++column_;
+        } else {
+            break;
+        }
+    }
+    if (pos_ == text_.size()) return last_end_;
+    Token token{{}, line_, column_};
+    const std::size_t start = pos_;
+    while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '#') ++pos_, ++column_;
+    token.text = text_.substr(start, pos_ - start);
+    last_end_ = Token{{}, line_, column_};
+    return token;
+}
+
+std::string TokenStream::where(const Token& token) const {
+    return file_name_ + ":" + std::to_string(token.line) + ":" + std::to_string(token.column);
+}
+
+void TokenStream::fail(const Token& token, const std::string& message) const {
+    throw SceneError(where(token) + ": " + message);
+}
+
+NumberReader::NumberReader(TokenStream& tokens, std::string entity, long long count)
+    : tokens_(tokens), entity_(std::move(entity)), remaining_(count) {}
+
+Token NumberReader::take(std::string_view what) {
+    const Token& token = tokens_.peek();
+    if (token.is_end())
+        tokens_.fail(token, "expected " + numbers_phrase(remaining_) + " for " + entity_ + ", found end of file");
+    if (!looks_like_number(token.text))
+        tokens_.fail(token, "expected a number for " + std::string(what) + ", found " + describe(token));
+    --remaining_;
+    last_ = tokens_.next();
+    return last_;
+}
+
+double NumberReader::number(std::string_view what) {
+    const Token token = take(what);
+    double value = 0.0;
+    switch (parse_double(token.text, value)) {
+    case Parsed::ok: return value;
+    case Parsed::not_finite:
+        tokens_.fail(token, "expected a finite number for " + std::string(what) + ", found " + describe(token));
+    case Parsed::malformed: break;
+    }
+    tokens_.fail(token, "expected a number for " + std::string(what) + ", found " + describe(token));
+}
+
+double NumberReader::non_negative(std::string_view what) {
+    const double value = number(what);
+    if (value < 0.0)
+        tokens_.fail(last_, "expected a non-negative number for " + std::string(what) + ", found " + describe(last_));
+    return value;
+}
+
+double NumberReader::positive(std::string_view what) {
+    const double value = number(what);
+    if (!(value > 0.0))
+        tokens_.fail(last_, "expected a positive number for " + std::string(what) + ", found " + describe(last_));
+    return value;
+}
+
+Vec3 NumberReader::vec3(std::string_view what) {
+    const double x = number(what);
+    const double y = number(what);
+    return {x, y, number(what)};
+}
+
+Color NumberReader::color(std::string_view what) {
+    const double r = non_negative(what);
+    const double g = non_negative(what);
+    return {r, g, non_negative(what)};
+}
+
+long long NumberReader::integer(std::string_view what, long long min, long long max) {
+    const Token token = take(what);
+    const std::string_view text = without_plus(token.text);
+    long long value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (end != text.data() + text.size() || error == std::errc::invalid_argument)
+        tokens_.fail(token, "expected a whole number for " + std::string(what) + ", found " + describe(token));
+    if (error == std::errc::result_out_of_range || value < min || value > max)
+        tokens_.fail(token, "expected a whole number from " + std::to_string(min) + " to " + std::to_string(max) +
+                                " for " + std::string(what) + ", found " + describe(token));
+    return value;
+}
+
+} // namespace whitted::detail

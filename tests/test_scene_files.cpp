@@ -1,0 +1,112 @@
+// Loading scene files from disk: dialect by extension, file-system errors, and the real SPD scenes.
+#include "whitted/scene_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+using namespace whitted;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view kTinyScene = "v from 0 0 5 at 0 0 0 up 0 1 0 angle 45 hither 1 resolution 8 8\ns 0 0 0 1\n";
+
+/// A fresh directory for this test's files.
+fs::path scratch_directory() {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    const fs::path directory = fs::path(::testing::TempDir()) / (std::string("whitted_") + test->name());
+    fs::remove_all(directory);
+    fs::create_directories(directory);
+    return directory;
+}
+
+fs::path write_file(const fs::path& path, std::string_view text) {
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+std::string load_error(const fs::path& path) {
+    try {
+        load_scene(path);
+    } catch (const SceneError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+template <class T> std::size_t count_shapes(const SceneData& data) {
+    return static_cast<std::size_t>(std::count_if(data.primitives.begin(), data.primitives.end(),
+                                                  [](const Primitive& p) { return std::holds_alternative<T>(p.shape); }));
+}
+
+} // namespace
+
+TEST(SceneFiles, NffAndP3fExtensionsPickTheDialectInAnyCase) {
+    const fs::path directory = scratch_directory();
+    EXPECT_EQ(load_scene(write_file(directory / "a.nff", kTinyScene)).data.primitives.size(), 1u);
+    EXPECT_EQ(load_scene(write_file(directory / "b.NFF", kTinyScene)).data.primitives.size(), 1u);
+    EXPECT_EQ(load_scene(write_file(directory / "c.P3f", kTinyScene)).data.primitives.size(), 1u);
+    // `b` is NFF only, so the dialect really follows the extension.
+    EXPECT_NE(load_error(write_file(directory / "d.p3f", "b 0 0 0")).find("unknown keyword 'b'"), std::string::npos);
+}
+
+TEST(SceneFiles, ErrorsNameTheFileAsGiven) {
+    const fs::path path = write_file(scratch_directory() / "bad.nff", "v from 0 0 1");
+    EXPECT_EQ(load_error(path), path.string() + ":1:13: expected 'at' in the viewpoint 'v', found end of file");
+}
+
+TEST(SceneFiles, UnknownExtensionIsAnError) {
+    EXPECT_EQ(load_error("scene.xyz"), "scene.xyz: unknown scene format '.xyz' (expected .nff or .p3f)");
+}
+
+TEST(SceneFiles, MissingFileIsAnError) {
+    const fs::path path = scratch_directory() / "missing.nff";
+    EXPECT_EQ(load_error(path).rfind(path.string() + ": cannot open", 0), 0u) << load_error(path);
+}
+
+TEST(SceneFiles, DirectoryIsAnError) {
+    const fs::path path = scratch_directory() / "folder.nff";
+    fs::create_directory(path);
+    EXPECT_EQ(load_error(path), path.string() + ": cannot open a directory as a scene file");
+}
+
+TEST(SceneFiles, EverySpdSceneLoadsWithTheExpectedContent) {
+    const fs::path directory = fs::path(WHITTED_SOURCE_DIR) / ".." / "shared" / "scenes" / "spd";
+    if (!fs::is_directory(directory)) GTEST_SKIP() << "no SPD scenes at " << directory;
+    std::map<std::string, LoadedScene> scenes;
+    for (const auto& entry : fs::directory_iterator(directory))
+        if (entry.path().extension() == ".nff") scenes.emplace(entry.path().stem().string(), load_scene(entry.path()));
+    ASSERT_FALSE(scenes.empty());
+    for (const auto& [name, scene] : scenes) {
+        EXPECT_GT(scene.data.camera.fovy, 45.0) << name; // the row-centre angle 45 widens slightly
+        EXPECT_FALSE(scene.data.lights.empty()) << name;
+    }
+    if (scenes.count("balls4")) {
+        const SceneData& balls = scenes["balls4"].data;
+        EXPECT_EQ(count_shapes<Sphere>(balls), 7381u);
+        EXPECT_EQ(count_shapes<Triangle>(balls), 2u); // the ground quad
+        EXPECT_EQ(balls.lights.size(), 3u);
+        EXPECT_NEAR(balls.lights[0].color.x, 1.0 / std::sqrt(3.0), 1e-12);
+    }
+    if (scenes.count("tetra6")) {
+        EXPECT_EQ(count_shapes<Triangle>(scenes["tetra6"].data), 4096u);
+    }
+    if (scenes.count("teapot6")) {
+        const SceneData& teapot = scenes["teapot6"].data;
+        EXPECT_EQ(teapot.vertex_normals.size(), 2256u);
+        const auto with_normals = std::count_if(teapot.primitives.begin(), teapot.primitives.end(),
+                                                [](const Primitive& p) { return p.vertex_normals >= 0; });
+        EXPECT_EQ(with_normals, 2256);
+    }
+    if (scenes.count("mount6")) {
+        const SceneData& mount = scenes["mount6"].data;
+        const bool has_glass_sphere = std::any_of(mount.primitives.begin(), mount.primitives.end(), [&](const Primitive& p) {
+            return std::holds_alternative<Sphere>(p.shape) && mount.materials[p.material].transmittance > 0.0;
+        });
+        EXPECT_TRUE(has_glass_sphere);
+    }
+}
