@@ -1,6 +1,7 @@
 # The two commands of the README, and a few more.
 #   make render   install missing packages, build (Release), render the classic scene
 #   make test     the same set-up, then every test through CTest
+MAKEFLAGS += --no-print-directory
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 SCENE ?= scenes/whitted_1980.p3f

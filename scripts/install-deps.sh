@@ -19,12 +19,13 @@ for package in "${packages[@]}"; do
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
 
-echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 if [ "$(id -u)" -eq 0 ]; then
+    echo "install-deps: installing ${missing[*]}"
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends "${missing[@]}"
 elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    echo "install-deps: installing ${missing[*]} with sudo"
     sudo -E apt-get update -qq
     sudo -E apt-get install -y -qq --no-install-recommends "${missing[@]}"
 else

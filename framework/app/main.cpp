@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -39,6 +40,17 @@ std::pair<int, int> output_size(const Camera& camera, const RenderOptions& optio
     if (options.width) return {*options.width, std::max(1, static_cast<int>(std::lround(*options.width * double(camera.res_y) / camera.res_x)))};
     if (options.height) return {std::max(1, static_cast<int>(std::lround(*options.height * double(camera.res_x) / camera.res_y))), *options.height};
     return {camera.res_x, camera.res_y};
+}
+
+// Checks an output path before rendering, so a typo does not cost a whole render.
+std::string check_output_path(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png" && extension != ".ppm" && extension != ".pfm")
+        return "the image must end in .png, .ppm or .pfm: " + path;
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder)) return "no such folder for the image: " + folder.string();
+    return {};
 }
 
 void print_stats(const RenderResult& result) {
@@ -78,8 +90,9 @@ int run_render(const RenderOptions& options) {
     }
     write_image(result.image, output, options.srgb ? Encoding::srgb : Encoding::linear);
     if (!options.quiet) {
-        std::printf("%s: %dx%d, stage %d, rendered in %.3f s (scene load and build %.3f s)\n", output.c_str(),
-                    width, height, options.stage, result.seconds, load_seconds);
+        std::printf("wrote %s (%dx%d, stage %d): rendered in %.3f s, scene loaded and built in %.3f s\n",
+                    std::filesystem::absolute(output).lexically_normal().c_str(), width, height, options.stage,
+                    result.seconds, load_seconds);
     }
     if (options.stats) print_stats(result);
     if (broken > 0) {
@@ -99,7 +112,8 @@ int main(int argc, char** argv) {
     CLI::App* render_command = app.add_subcommand("render", "Render a scene file (.nff or .p3f) to an image.");
     render_command->add_option("scene", options.scene, "Scene file (.nff or .p3f)")->required();
     render_command->add_option("-o,--output", options.output,
-                               "Image to write: .png, .ppm or .pfm (default: the scene's name with .png)");
+                               "Image to write: .png, .ppm or .pfm (default: the scene's name with .png)")
+        ->check(CLI::Validator(check_output_path, "IMAGE"));
     render_command->add_option("--width", options.width, "Image width in pixels (default: the scene file's)")
         ->check(CLI::Range(1, 16384));
     render_command->add_option("--height", options.height, "Image height in pixels (default: the scene file's)")
