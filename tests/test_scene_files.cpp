@@ -90,7 +90,7 @@ TEST(SceneFiles, EverySpdSceneLoadsWithTheExpectedContent) {
         EXPECT_EQ(count_shapes<Sphere>(balls), 7381u);
         EXPECT_EQ(count_shapes<Triangle>(balls), 2u); // the ground quad
         EXPECT_EQ(balls.lights.size(), 3u);
-        EXPECT_NEAR(balls.lights[0].color.x, 1.0 / std::sqrt(3.0), 1e-12);
+        EXPECT_NEAR(balls.lights[0].color.x, std::sqrt(3.0) / 6.0, 1e-12); // SPD rule sqrt(N) / (2 N)
     }
     if (scenes.count("tetra6")) {
         EXPECT_EQ(count_shapes<Triangle>(scenes["tetra6"].data), 4096u);

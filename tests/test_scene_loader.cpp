@@ -68,13 +68,25 @@ TEST(NffLoader, LightWithAColourKeepsIt) {
     expect_vec(scene.data.lights[0].color, {0.5, 0.25, 1});
 }
 
-TEST(NffLoader, LightsWithoutAColourShareOneOverSqrtOfTheLightCount) {
+TEST(NffLoader, LightsWithoutAColourAndTheAmbientGetTheSpdIntensity) {
+    // Haines' SPD rule: sqrt(N) / (2 N) for N = 4 lights is 2 / 8 = 0.25.
     const auto scene = nff_body("l 1 2 3\nl 4 5 6\nl 0 0 9 1 1 1\nl 7 8 9");
     ASSERT_EQ(scene.data.lights.size(), 4u);
-    expect_vec(scene.data.lights[0].color, Color(0.5));
+    expect_vec(scene.data.lights[0].color, Color(0.25));
     expect_vec(scene.data.lights[1].position, {4, 5, 6});
     expect_vec(scene.data.lights[2].color, Color(1.0));
-    expect_vec(scene.data.lights[3].color, Color(0.5));
+    expect_vec(scene.data.lights[3].color, Color(0.25));
+    expect_vec(scene.data.ambient, Color(0.25));
+}
+
+TEST(NffLoader, AnExplicitAmbientWinsOverTheSpdIntensity) {
+    const auto scene = nff_body("ambient 0.1 0.2 0.3\nl 1 2 3");
+    expect_vec(scene.data.lights[0].color, Color(0.5));
+    expect_vec(scene.data.ambient, {0.1, 0.2, 0.3});
+}
+
+TEST(NffLoader, ColouredLightsLeaveTheAmbientDark) {
+    expect_vec(nff_body("l 1 2 3 1 1 1").data.ambient, Color(0.0));
 }
 
 TEST(NffLoader, MaterialGivesColourWeightsExponentTransmittanceAndIor) {

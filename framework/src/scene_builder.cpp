@@ -41,6 +41,7 @@ bool SceneBuilder::read_shared(const Token& keyword) {
     } else if (word == "ambient") {
         NumberReader numbers(tokens_, "'ambient'", 3);
         data().ambient = numbers.color("the ambient light intensity");
+        has_ambient_ = true;
     } else if (word == "checker") {
         read_checker(keyword);
     } else if (word == "maxdepth") {
@@ -177,9 +178,14 @@ void SceneBuilder::read_polygon(const Token& keyword, bool with_normals) {
 
 LoadedScene SceneBuilder::finish() {
     if (!has_camera_) tokens_.fail(tokens_.peek(), "expected a viewpoint 'v' in the file, found end of file");
-    // SPD convention: lights without a colour share a total intensity, each 1 / sqrt(number of lights).
-    const double intensity = 1.0 / std::sqrt(static_cast<double>(data().lights.size()));
-    for (const std::size_t i : uncoloured_lights_) data().lights[i].color = Color(intensity);
+    // The SPD rule (Haines' Readme) for scenes that give no intensities: each light,
+    // and the ambient light, gets sqrt(N) / (2 N) for N lights.
+    if (!uncoloured_lights_.empty()) {
+        const double n = static_cast<double>(data().lights.size());
+        const double intensity = std::sqrt(n) / (2.0 * n);
+        for (const std::size_t i : uncoloured_lights_) data().lights[i].color = Color(intensity);
+        if (!has_ambient_) data().ambient = Color(intensity);
+    }
     return std::move(scene_);
 }
 

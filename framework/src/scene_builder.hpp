@@ -74,6 +74,7 @@ class SceneBuilder {
     SceneLimits limits_;
     LoadedScene scene_;
     bool has_camera_ = false;
+    bool has_ambient_ = false;
     bool has_material_ = false;
     std::vector<std::size_t> uncoloured_lights_;
 };
