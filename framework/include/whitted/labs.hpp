@@ -15,6 +15,7 @@
 #include "whitted/hit.hpp"
 #include "whitted/interval.hpp"
 #include "whitted/primitive.hpp"
+#include "whitted/not_implemented.hpp"
 #include "whitted/tracer.hpp"
 
 #include <optional>
