@@ -8,7 +8,7 @@ SCENE ?= scenes/whitted_1980.p3f
 OUT ?= whitted_1980.png
 SIZE ?= 512
 
-.PHONY: all deps configure build render test clean
+.PHONY: all deps configure build render test references clean
 
 all: build
 
@@ -26,6 +26,11 @@ render: build
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
+
+# Instructors: rewrite every reference picture from the reference solution.
+references: build
+	@cd $(BUILD_DIR) && WHITTED_UPDATE_REFERENCES=1 ctest -R '^(lab[0-9]\.Lab[0-9]Image|integration\.)' -j$(JOBS) --output-on-failure
+	@git status --short -- tests
 
 clean:
 	rm -rf $(BUILD_DIR)

@@ -1,0 +1,27 @@
+// Image tests: render a scene with the linked labs and compare it with a
+// committed reference picture through the image gate (image_compare.hpp).
+//
+// On failure the test writes three pictures next to each other in
+// <build>/test-output/<test name>/: yours.png, reference.png and diff.png (the
+// absolute difference, 16 times brighter), and says where they are.
+// With WHITTED_UPDATE_REFERENCES=1 in the environment the test writes the
+// reference instead (`make references`, instructors only: it must be run with
+// the reference solution linked).
+#pragma once
+
+#include <string>
+
+namespace whitted::testing_helpers {
+
+struct ImageCheck {
+    std::string scene;     // path relative to the source tree, e.g. "scenes/03_blinn_phong.p3f"
+    std::string reference; // path relative to the source tree, e.g. "tests/labs/03_blinn_phong/03_blinn_phong.png"
+    int stage = 6;         // render with the features of labs 1..stage
+    int width = 160;       // the scene file's aspect ratio is replaced by width x height
+    int height = 120;
+};
+
+/// Renders the scene and expects it to pass the image gate against the reference (GoogleTest assertion).
+void expect_matches_reference(const ImageCheck& check);
+
+} // namespace whitted::testing_helpers
