@@ -1,139 +1,15 @@
 // The `whitted` command: render NFF and P3F scenes with the Whitted ray tracer.
-#include "progress.hpp"
-#include "whitted/render.hpp"
-#include "whitted/scene_loader.hpp"
+#include "commands.hpp"
 
-#include <CLI/CLI.hpp>
-
-#include <cctype>
-#include <chrono>
 #include <cstdio>
 #include <exception>
-#include <optional>
-#include <string>
-#include <unistd.h>
-
-namespace {
-
-using namespace whitted;
-
-struct RenderOptions {
-    std::string scene;
-    std::string output;
-    std::optional<int> width, height, max_depth;
-    double min_weight = RenderSettings{}.min_weight;
-    int threads = 0;
-    int stage = 6;
-    bool stats = false;
-    bool quiet = false;
-    bool srgb = false;
-};
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The output resolution: the file's, unless --width/--height say otherwise
-// (one of them alone keeps the file's aspect ratio).
-std::pair<int, int> output_size(const Camera& camera, const RenderOptions& options) {
-    if (options.width && options.height) return {*options.width, *options.height};
-    if (options.width) return {*options.width, std::max(1, static_cast<int>(std::lround(*options.width * double(camera.res_y) / camera.res_x)))};
-    if (options.height) return {std::max(1, static_cast<int>(std::lround(*options.height * double(camera.res_x) / camera.res_y))), *options.height};
-    return {camera.res_x, camera.res_y};
-}
-
-// Checks an output path before rendering, so a typo does not cost a whole render.
-std::string check_output_path(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".png" && extension != ".ppm" && extension != ".pfm")
-        return "the image must end in .png, .ppm or .pfm: " + path;
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder)) return "no such folder for the image: " + folder.string();
-    return {};
-}
-
-void print_stats(const RenderResult& result) {
-    const RayStats& s = result.stats;
-    std::printf("rays: %llu eye, %llu shadow, %llu reflected, %llu refracted; %llu in all\n",
-                static_cast<unsigned long long>(s.eye), static_cast<unsigned long long>(s.shadow),
-                static_cast<unsigned long long>(s.reflected), static_cast<unsigned long long>(s.refracted),
-                static_cast<unsigned long long>(s.total()));
-    std::printf("speed: %.2f million rays per second\n", s.total() / std::max(result.seconds, 1e-9) / 1e6);
-}
-
-int run_render(const RenderOptions& options) {
-    const auto load_start = std::chrono::steady_clock::now();
-    LoadedScene loaded = load_scene(options.scene);
-    for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-    auto [width, height] = output_size(loaded.data.camera, options);
-    loaded.data.camera = loaded.data.camera.with_resolution(width, height);
-    RenderSettings settings;
-    settings.stage = options.stage;
-    settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);
-    settings.min_weight = options.min_weight;
-    const Scene scene(std::move(loaded.data));
-    const double load_seconds = seconds_since(load_start);
-
-    ProgressBar bar(stderr, !options.quiet && isatty(fileno(stderr)));
-    RenderResult result = render(scene, settings, options.threads, [&](double done) { bar.update(done); });
-    bar.finish();
-
-    const std::string output = options.output.empty()
-                                   ? std::filesystem::path(options.scene).stem().string() + ".png"
-                                   : options.output;
-    // A NaN or infinite colour is a bug in the shading code: show it, loudly.
-    const std::size_t broken = count_non_finite(result.image);
-    if (broken > 0) {
-        for (Color& c : result.image.pixels)
-            if (!is_finite(c)) c = Color(1.0, 0.0, 1.0);
-    }
-    write_image(result.image, output, options.srgb ? Encoding::srgb : Encoding::linear);
-    if (!options.quiet) {
-        std::printf("wrote %s (%dx%d, stage %d): rendered in %.3f s, scene loaded and built in %.3f s\n",
-                    std::filesystem::absolute(output).lexically_normal().c_str(), width, height, options.stage,
-                    result.seconds, load_seconds);
-    }
-    if (options.stats) print_stats(result);
-    if (broken > 0) {
-        std::fprintf(stderr, "error: %zu pixels were NaN or infinite; they are magenta in %s\n", broken, output.c_str());
-        return 1;
-    }
-    return 0;
-}
-
-} // namespace
+#include <vector>
 
 int main(int argc, char** argv) {
     CLI::App app{"whitted: a Whitted-style recursive ray tracer for NFF and P3F scenes."};
     app.footer("Example: whitted render scenes/whitted_1980.p3f -o whitted_1980.png --stats");
     app.require_subcommand(1);
-    RenderOptions options;
-    CLI::App* render_command = app.add_subcommand("render", "Render a scene file (.nff or .p3f) to an image.");
-    render_command->add_option("scene", options.scene, "Scene file (.nff or .p3f)")->required();
-    render_command->add_option("-o,--output", options.output,
-                               "Image to write: .png, .ppm or .pfm (default: the scene's name with .png)")
-        ->check(CLI::Validator(check_output_path, "IMAGE"));
-    render_command->add_option("--width", options.width, "Image width in pixels (default: the scene file's)")
-        ->check(CLI::Range(1, 16384));
-    render_command->add_option("--height", options.height, "Image height in pixels (default: the scene file's)")
-        ->check(CLI::Range(1, 16384));
-    render_command->add_option("--max-depth", options.max_depth,
-                               "Deepest ray in the ray tree; the eye ray is depth 1 (default: the scene's, else 5)")
-        ->check(CLI::Range(1, 64));
-    render_command->add_option("--min-weight", options.min_weight,
-                               "Skip secondary rays whose accumulated weight is below this (Whitted's adaptive "
-                               "depth control; 0 = trace every ray down to the maximum depth; default 1/1024)")
-        ->check(CLI::Range(0.0, 1.0));
-    render_command->add_option("--threads", options.threads, "Rendering threads; 0 = one per core (default 0)")
-        ->check(CLI::Range(0, 1024));
-    render_command->add_option("--stage", options.stage,
-                               "Use the features of labs 1..K only: 1 ray casting, 2 shadows, 3 Blinn-Phong, "
-                               "4 reflection, 5 refraction, 6 Fresnel (default 6)")
-        ->check(CLI::Range(1, 6));
-    render_command->add_flag("--stats", options.stats, "Print how many rays of each kind were cast, and rays per second");
-    render_command->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary line");
-    render_command->add_flag("--srgb", options.srgb, "Write sRGB-encoded 8-bit values (default: linear, as in the course)");
+    const std::vector<whitted::Command> commands = {whitted::add_render_command(app)};
 
     try {
         app.parse(argc, argv);
@@ -144,7 +20,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        if (render_command->parsed()) return run_render(options);
+        for (const whitted::Command& command : commands)
+            if (command.app->parsed()) return command.run();
     } catch (const std::exception& error) {
         std::fprintf(stderr, "%s\n", error.what());
         return 1;

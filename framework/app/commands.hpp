@@ -1,0 +1,19 @@
+// The subcommands of `whitted`. Each one registers its options with CLI11 and
+// returns how to run it once the command line has been parsed.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace whitted {
+
+struct Command {
+    CLI::App* app;            // the subcommand, to ask whether it was given
+    std::function<int()> run; // runs it; returns the exit code
+};
+
+/// `whitted render SCENE ...`
+Command add_render_command(CLI::App& app);
+
+} // namespace whitted
