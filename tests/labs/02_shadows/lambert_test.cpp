@@ -27,17 +27,16 @@ TEST(Shading, LambertOnAPlaneLitAt60Degrees) {
 }
 
 TEST(Shading, ABlockerBetweenPointAndLightCastsAShadow) {
-    // A small sphere halfway between the floor point and the light: only ambient remains.
+    // A small sphere halfway between the floor point and the light: no light arrives (Lambert only, stage 2).
     SceneData data;
-    data.ambient = Color(0.1);
     data.materials = {diffuse_material(Color(1.0))};
     data.primitives.push_back({Plane{Point3(0.0), Vec3(0.0, 1.0, 0.0)}, 0});
     data.primitives.push_back({Sphere{Point3(0.0, 2.0, 0.0), 0.2}, 0});
     data.lights = {PointLight{Point3(0.0, 4.0, 0.0), Color(1.0)}};
     const Scene scene(std::move(data));
     const Ray down{Point3(0.5, 1.0, 0.5), glm::normalize(Vec3(-0.5, -1.0, -0.5))}; // hits the origin
-    EXPECT_NEAR(trace_one(scene, down, 3).x, 0.1, 1e-12);
-    // One unit to the side the feeler passes the blocker: ambient + n . L.
+    EXPECT_EQ(trace_one(scene, down, 2).x, 0.0);
+    // One unit to the side the feeler passes the blocker: n . L = 4 / sqrt(17).
     const Ray beside{Point3(1.0, 1.0, 0.0), Vec3(0.0, -1.0, 0.0)};
-    EXPECT_NEAR(trace_one(scene, beside, 3).x, 0.1 + 4.0 / std::sqrt(17.0), 1e-12);
+    EXPECT_NEAR(trace_one(scene, beside, 2).x, 4.0 / std::sqrt(17.0), 1e-12);
 }
