@@ -1,6 +1,7 @@
 // `whitted render`: render an NFF or P3F scene to an image.
 #include "commands.hpp"
 #include "progress.hpp"
+#include "whitted/lab_status.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
@@ -23,7 +24,7 @@ struct RenderOptions {
     std::optional<int> width, height, max_depth;
     double min_weight = RenderSettings{}.min_weight;
     int threads = 0;
-    int stage = 6;
+    std::optional<int> stage; // default: the highest stage whose labs are all done
     bool stats = false;
     bool quiet = false;
     bool srgb = false;
@@ -62,14 +63,48 @@ void print_stats(const RenderResult& result) {
     std::printf("speed: %.2f million rays per second\n", s.total() / std::max(result.seconds, 1e-9) / 1e6);
 }
 
+// Lists the labs that are not done yet, one per line.
+std::string missing_labs(const std::vector<LabStatus>& labs, int up_to) {
+    std::string text;
+    for (const LabStatus& lab : labs)
+        if (lab.number <= up_to && !lab.done)
+            text += "  lab " + std::to_string(lab.number) + " (" + lab.title + "): " + lab.message + "\n";
+    return text;
+}
+
+// The stage to render: the one asked for, or the highest whose labs are all
+// done. Explains what is missing instead of failing inside the render.
+std::optional<int> choose_stage(const RenderOptions& options) {
+    const std::vector<LabStatus> labs = probe_labs();
+    const int ready = highest_complete_stage(labs);
+    if (options.stage) {
+        if (*options.stage <= ready) return options.stage;
+        std::fprintf(stderr, "whitted: stage %d needs labs 1 to %d, and these are not done yet:\n%s", *options.stage,
+                     *options.stage, missing_labs(labs, *options.stage).c_str());
+        if (ready > 0) std::fprintf(stderr, "Finish them, or render an earlier stage with --stage %d.\n", ready);
+        return std::nullopt;
+    }
+    if (ready == 0) {
+        std::fprintf(stderr, "whitted: nothing can be rendered before lab 1 is done:\n%s", missing_labs(labs, 1).c_str());
+        return std::nullopt;
+    }
+    if (ready < 6) {
+        std::fprintf(stderr, "note: rendering stage %d (labs 1 to %d); these labs are not done yet:\n%s", ready, ready,
+                     missing_labs(labs, 6).c_str());
+    }
+    return ready;
+}
+
 int run_render(const RenderOptions& options) {
+    const std::optional<int> stage = choose_stage(options);
+    if (!stage) return 1;
     const auto load_start = std::chrono::steady_clock::now();
     LoadedScene loaded = load_scene(options.scene);
     for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
     auto [width, height] = output_size(loaded.data.camera, options);
     loaded.data.camera = loaded.data.camera.with_resolution(width, height);
     RenderSettings settings;
-    settings.stage = options.stage;
+    settings.stage = *stage;
     settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);
     settings.min_weight = options.min_weight;
     const Scene scene(std::move(loaded.data));
@@ -91,7 +126,7 @@ int run_render(const RenderOptions& options) {
     write_image(result.image, output, options.srgb ? Encoding::srgb : Encoding::linear);
     if (!options.quiet) {
         std::printf("wrote %s (%dx%d, stage %d): rendered in %.3f s, scene loaded and built in %.3f s\n",
-                    std::filesystem::absolute(output).lexically_normal().c_str(), width, height, options.stage,
+                    std::filesystem::absolute(output).lexically_normal().c_str(), width, height, *stage,
                     result.seconds, load_seconds);
     }
     if (options.stats) print_stats(result);
@@ -127,7 +162,7 @@ Command add_render_command(CLI::App& app) {
         ->check(CLI::Range(0, 1024));
     render_command->add_option("--stage", options->stage,
                                "Use the features of labs 1..K only: 1 ray casting, 2 shadows, 3 Blinn-Phong, "
-                               "4 reflection, 5 refraction, 6 Fresnel (default 6)")
+                               "4 reflection, 5 refraction, 6 Fresnel (default: the highest stage whose labs are done)")
         ->check(CLI::Range(1, 6));
     render_command->add_flag("--stats", options->stats, "Print how many rays of each kind were cast, and rays per second");
     render_command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary line");
