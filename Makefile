@@ -1,6 +1,7 @@
 # The two commands of the README, and a few more.
 #   make render   install missing packages, build (Release), render the classic scene
 #   make test     the same set-up, then every test through CTest
+#   make handout OUT=dir, make proofs, make references: for instructors
 MAKEFLAGS += --no-print-directory
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
@@ -8,7 +9,7 @@ SCENE ?= scenes/whitted_1980.p3f
 OUT ?= whitted_1980.png
 SIZE ?= 512
 
-.PHONY: all deps configure build render test references clean
+.PHONY: all deps configure build render test references handout proofs clean
 
 all: build
 
@@ -24,13 +25,28 @@ build: configure
 render: build
 	@./$(BUILD_DIR)/whitted render $(SCENE) -o $(OUT) --width $(SIZE) --height $(SIZE)
 
+# With the reference solution (the instructor's tree): every test, plainly.
+# Without it (the student handout): every test, then each lab's progress.
 test: build
+ifneq ($(wildcard solution/01_ray_casting.cpp),)
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
+else
+	@bash scripts/lab-progress.sh $(BUILD_DIR)
+endif
 
 # Instructors: rewrite every reference picture from the reference solution.
 references: build
 	@cd $(BUILD_DIR) && WHITTED_UPDATE_REFERENCES=1 ctest -R '^(lab[0-9]\.Lab[0-9]Image|integration\.)' -j$(JOBS) --output-on-failure
 	@git status --short -- tests
+
+# Instructors: write the student handout (no solution, hidden tests or mistakes) to OUT.
+handout:
+	@test -n "$(OUT)" || { echo "usage: make handout OUT=folder"; exit 2; }
+	@bash scripts/export-handout.sh "$(OUT)"
+
+# Instructors: prove the tests catch every stub and every catalogued mistake.
+proofs:
+	@bash scripts/prove-tests.sh
 
 clean:
 	rm -rf $(BUILD_DIR)

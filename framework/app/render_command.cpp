@@ -96,13 +96,14 @@ std::optional<int> choose_stage(const RenderOptions& options) {
 }
 
 int run_render(const RenderOptions& options) {
-    const std::optional<int> stage = choose_stage(options);
-    if (!stage) return 1;
     const auto load_start = std::chrono::steady_clock::now();
     LoadedScene loaded = load_scene(options.scene);
     for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
     auto [width, height] = output_size(loaded.data.camera, options);
     loaded.data.camera = loaded.data.camera.with_resolution(width, height);
+    // Scene errors come first: they are the user's to fix whatever the labs' state.
+    const std::optional<int> stage = choose_stage(options);
+    if (!stage) return 1;
     RenderSettings settings;
     settings.stage = *stage;
     settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);

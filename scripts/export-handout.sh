@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Writes the student handout to a folder: the instructor's tree without the
+# reference solution, the hidden tests, the mistake catalogue, the grading
+# rubric and the instructor-only scripts and documents.
+set -euo pipefail
+out=${1:?usage: export-handout.sh OUT}
+cd "$(dirname "$0")/.."
+if [ -e "$out" ] && [ -n "$(ls -A "$out" 2>/dev/null)" ]; then
+    echo "export-handout: $out exists and is not empty; choose a new folder" >&2
+    exit 2
+fi
+
+# What stays with the instructor.
+private='^(solution/|tests/hidden/|tests/mistakes/|tests/solution/|tests/grader/|tests/rubric\.json$|scripts/(prove-tests|test-grader|export-handout|test-handout)\.sh$|docs/instructors\.md$|docs/handout/|\.ci/|README\.md$)'
+
+if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
+    files=$(git ls-files --cached --others --exclude-standard)
+else
+    files=$(find . -type f ! -path './build*' ! -path './.git/*' | sed 's|^\./||')
+fi
+mkdir -p "$out"
+printf '%s\n' "$files" | grep -vE "$private" | while IFS= read -r file; do
+    [ -f "$file" ] || continue
+    mkdir -p "$out/$(dirname "$file")"
+    cp -p "$file" "$out/$file"
+done
+cp docs/handout/README.md "$out/README.md"
+echo "handout written to $out ($(find "$out" -type f | wc -l) files)"
+echo "check it: cd $out && make test   (every lab's tests fail until its stubs are replaced)"

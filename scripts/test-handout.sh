@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# CI check of the student handout, as a student meets it:
+#   1. export it; `make test` fails and names the unfinished stubs;
+#   2. `make render` explains that lab 1 is missing;
+#   3. with labs 1-3 done, `make render` renders stage 3 and says which labs are missing;
+#   4. with every lab done (the reference files copied in), `make test` passes.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+handout="$work/handout"
+fail() { echo "test-handout: $*" >&2; exit 1; }
+
+bash scripts/export-handout.sh "$handout" > /dev/null
+for private in solution tests/hidden tests/mistakes tests/solution tests/rubric.json docs/instructors.md; do
+    [ ! -e "$handout/$private" ] || fail "the handout contains $private"
+done
+# The handout shares shared/ with the instructor tree, for the SPD scenes.
+[ -d "$root/../shared" ] && ln -s "$root/../shared" "$work/shared"
+cd "$handout"
+
+echo "test-handout: 1. make test with the untouched stubs"
+if make test > "$work/test1.log" 2>&1; then fail "make test passed with stubs"; fi
+grep -q "lab 1 (ray casting): 0/" "$work/test1.log" || fail "no progress line for lab 1"
+grep -q "primary_ray() is not implemented yet" "$work/test1.log" || fail "the stub message is not shown"
+grep -A12 "^Lab progress" "$work/test1.log"
+
+echo "test-handout: 2. make render with the untouched stubs"
+if make render > "$work/render1.log" 2>&1; then fail "make render succeeded with stubs"; fi
+grep -q "nothing can be rendered before lab 1 is done" "$work/render1.log" || { cat "$work/render1.log"; fail "make render did not explain"; }
+
+echo "test-handout: 3. labs 1-3 done"
+cp "$root"/solution/0[123]_*.cpp labs/
+make render > "$work/render2.log" 2>&1 || { cat "$work/render2.log"; fail "make render failed with labs 1-3"; }
+grep -q "rendering stage 3" "$work/render2.log" || fail "make render did not say it renders stage 3"
+[ -s whitted_1980.png ] || fail "no whitted_1980.png"
+grep -E "^note|lab [456]" "$work/render2.log"
+
+echo "test-handout: 4. every lab done"
+cp "$root"/solution/0[456]_*.cpp labs/
+make test > "$work/test2.log" 2>&1 || { tail -40 "$work/test2.log"; fail "make test failed with every lab done"; }
+grep -A12 "^Lab progress" "$work/test2.log"
+echo "test-handout: passed"
