@@ -19,6 +19,7 @@ Ray spawn_ray(const Hit& hit, const Vec3& direction) {
 bool is_lit(const Tracer& tracer, const Hit& hit, const PointLight& light) {
     const Vec3 to_light = light.position - hit.point;
     const double distance = glm::length(to_light);
+    if (distance == 0.0) return false; // a light on the surface itself lights nothing
     return !tracer.occluded(spawn_ray(hit, to_light / distance), distance);
 }
 
@@ -28,7 +29,9 @@ Color lambert(const Tracer& tracer, const Hit& hit) {
     const Color kd = material.diffuse * material.color_at(hit.point);
     Color color(0.0);
     for (const PointLight& light : scene.lights()) {
-        const Vec3 wi = glm::normalize(light.position - hit.point);
+        const Vec3 to_light = light.position - hit.point;
+        if (to_light == Vec3(0.0)) continue; // a light on the surface itself lights nothing
+        const Vec3 wi = glm::normalize(to_light);
         const double cos_theta = glm::dot(hit.normal, wi);
         // No shadow feeler towards a light behind the surface.
         if (cos_theta <= 0.0 || !is_lit(tracer, hit, light)) continue;

@@ -13,7 +13,9 @@ Color blinn_phong(const Tracer& tracer, const Hit& hit, const Vec3& wo) {
     // I = I_a kd + sum over lights of f_s (I_l kd (n . L) + I_l ks (h . n)^shininess)
     Color color = scene.ambient() * kd;
     for (const PointLight& light : scene.lights()) {
-        const Vec3 wi = glm::normalize(light.position - hit.point);
+        const Vec3 to_light = light.position - hit.point;
+        if (to_light == Vec3(0.0)) continue; // a light on the surface itself lights nothing
+        const Vec3 wi = glm::normalize(to_light);
         const double cos_theta = glm::dot(hit.normal, wi);
         if (cos_theta <= 0.0 || !is_lit(tracer, hit, light)) continue;
         const Vec3 halfway = glm::normalize(wi + wo);

@@ -6,6 +6,7 @@
 namespace whitted {
 
 double fresnel_reflectance(double cos_theta_i, double eta_i, double eta_t) {
+    cos_theta_i = glm::clamp(cos_theta_i, 0.0, 1.0); // rounding may push a unit dot product past 1
     const double sin_theta_t = eta_i / eta_t * std::sqrt(glm::max(0.0, 1.0 - cos_theta_i * cos_theta_i));
     if (sin_theta_t >= 1.0) return 1.0; // total internal reflection
     const double cos_theta_t = std::sqrt(1.0 - sin_theta_t * sin_theta_t);

@@ -17,7 +17,7 @@ void ProgressBar::update(double fraction_done) {
     const int filled = static_cast<int>(fraction_done * kWidth);
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     const std::string bar = std::string(filled, '#') + std::string(kWidth - filled, '.');
-    if (fraction_done > 0.0) {
+    if (fraction_done >= 0.05) { // earlier estimates rest on too few tiles
         const double eta = elapsed * (1.0 - fraction_done) / fraction_done;
         std::fprintf(stream_, "\r[%s] %3d%%  ETA %5.1f s ", bar.c_str(), static_cast<int>(fraction_done * 100), eta);
     } else {

@@ -131,6 +131,12 @@ int run_render(const RenderOptions& options) {
                     result.seconds, load_seconds);
     }
     if (options.stats) print_stats(result);
+    if (result.stats.pixels_cut_short > 0) {
+        std::fprintf(stderr,
+                     "warning: %llu pixels reached the limit of %u rays per pixel and were cut short; "
+                     "lower --max-depth or raise --min-weight\n",
+                     static_cast<unsigned long long>(result.stats.pixels_cut_short), settings.max_rays_per_pixel);
+    }
     if (broken > 0) {
         std::fprintf(stderr, "error: %zu pixels were NaN or infinite; they are magenta in %s\n", broken, output.c_str());
         return 1;
@@ -154,11 +160,21 @@ Command add_render_command(CLI::App& app) {
         ->check(CLI::Range(1, 16384));
     render_command->add_option("--max-depth", options->max_depth,
                                "Deepest ray in the ray tree; the eye ray is depth 1 (default: the scene's, else 5)")
-        ->check(CLI::Range(1, 64));
+        ->check(CLI::Range(1, 100));
     render_command->add_option("--min-weight", options->min_weight,
                                "Skip secondary rays whose accumulated weight is below this (Whitted's adaptive "
                                "depth control; 0 = trace every ray down to the maximum depth; default 1/1024)")
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                double value = 0.0;
+                try {
+                    value = std::stod(text);
+                } catch (...) {
+                    return "expected a number from 0 to 1, found " + text;
+                }
+                return value >= 0.0 && value <= 1.0 ? "" : "expected a number from 0 to 1, found " + text;
+            },
+            "0..1"));
     render_command->add_option("--threads", options->threads, "Rendering threads; 0 = one per core (default 0)")
         ->check(CLI::Range(0, 1024));
     render_command->add_option("--stage", options->stage,

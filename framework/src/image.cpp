@@ -4,6 +4,7 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <limits>
 #include <bit>
 #include <cctype>
 #include <cmath>
@@ -71,13 +72,16 @@ void write_ppm(const Image& image, const std::filesystem::path& path, Encoding e
 }
 
 /// Writes an RGB PFM: little-endian floats (scale -1.0), bottom row first as the format requires.
+/// Values beyond the float range are clamped to the largest float, so no infinity is written.
 void write_pfm(const Image& image, const std::filesystem::path& path) {
     std::vector<unsigned char> bytes;
     bytes.reserve(image.pixels.size() * 12);
     for (int y = image.height - 1; y >= 0; --y) {
         for (int x = 0; x < image.width; ++x) {
             for (int k = 0; k < 3; ++k) {
-                const auto bits = std::bit_cast<std::uint32_t>(static_cast<float>(image.at(x, y)[k]));
+                constexpr double kLargestFloat = std::numeric_limits<float>::max();
+                const double value = std::clamp(image.at(x, y)[k], -kLargestFloat, kLargestFloat);
+                const auto bits = std::bit_cast<std::uint32_t>(static_cast<float>(value));
                 for (int shift = 0; shift < 32; shift += 8) bytes.push_back(static_cast<unsigned char>(bits >> shift));
             }
         }

@@ -80,19 +80,24 @@ class EarClipper {
         std::vector<TriangleIndices> triangles;
         triangles.reserve(remaining_);
         std::size_t corner = 0;
-        std::size_t stalled = 0; // corners visited since the last change
+        std::size_t stalled = 0;      // corners visited since the last change
+        bool clip_any_convex = false; // set after a lap without an ear: the polygon intersects itself
         while (remaining_ > 3) {
             const std::size_t a = prev_[corner], c = next_[corner];
             const double turn = turn_at(corner);
             if (turn == 0.0) { // collinear or duplicate: drop it, no area is lost
                 corner = remove(corner);
                 stalled = 0;
-            } else if (turn > 0.0 && (is_ear(a, corner, c) || stalled > remaining_)) {
-                // After a full lap without an ear (self-intersection or rounding), clip any convex corner.
+            } else if (turn > 0.0 && (clip_any_convex || is_ear(a, corner, c))) {
                 triangles.push_back({a, corner, c});
                 corner = next_[remove(corner)]; // moving on past c avoids growing a fan of slivers around a
                 stalled = 0;
-            } else if (stalled > 2 * remaining_) {
+            } else if (stalled > remaining_ && !clip_any_convex) {
+                // A full lap without an ear (self-intersection or rounding): from now on clip any
+                // convex corner, without searching for ears again (that would cost a lap per clip).
+                clip_any_convex = true;
+                stalled = 0;
+            } else if (stalled > remaining_) {
                 break; // no convex corner left: what remains has no area
             } else {
                 corner = next_[corner];

@@ -8,7 +8,11 @@ namespace whitted {
 namespace {
 
 // Interpolates a pp triangle's vertex normals at the hit's barycentric coordinates.
-void apply_vertex_normals(Hit& hit, const VertexNormals& normals) {
+// The result is kept only when it honours what the labs rely on: it faces the
+// incoming ray, and the mirror direction about it leaves on the ray's side of
+// the true surface. Near silhouettes of coarse meshes neither need hold; there
+// the geometric normal is used.
+void apply_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& normals) {
     const double b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
     Vec3 n = b0 * normals[0] + b1 * normals[1] + b2 * normals[2];
     const double length = glm::length(n);
@@ -16,6 +20,10 @@ void apply_vertex_normals(Hit& hit, const VertexNormals& normals) {
     n /= length;
     // The shading normal faces the same side as the geometric one.
     if (glm::dot(n, hit.geometric_normal) < 0.0) n = -n;
+    const Vec3 wo = -ray.direction;
+    const double cos_theta = glm::dot(wo, n);
+    const Vec3 mirrored = 2.0 * cos_theta * n - wo;
+    if (cos_theta <= 0.0 || glm::dot(mirrored, hit.geometric_normal) <= 0.0) return;
     hit.normal = n;
 }
 
@@ -56,7 +64,7 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     });
     if (nearest) {
         const Primitive& primitive = data_.primitives[nearest->primitive];
-        if (primitive.vertex_normals >= 0) apply_vertex_normals(*nearest, data_.vertex_normals[primitive.vertex_normals]);
+        if (primitive.vertex_normals >= 0) apply_vertex_normals(*nearest, ray, data_.vertex_normals[primitive.vertex_normals]);
     }
     return nearest;
 }

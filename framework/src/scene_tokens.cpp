@@ -43,6 +43,9 @@ Parsed parse_double(std::string_view text, double& value) {
     return std::isfinite(value) ? Parsed::ok : Parsed::not_finite;
 }
 
+// Larger numbers would overflow lengths and areas (their squares must stay finite).
+constexpr double kLargestNumber = 1e15;
+
 std::string numbers_phrase(long long count) {
     return count == 1 ? "1 more number" : std::to_string(count) + " more numbers";
 }
@@ -73,11 +76,28 @@ std::string quoted(std::string_view word) {
 
 std::string describe(const Token& token) {
     if (token.is_end()) return "end of file";
-    return quoted(token.text);
+    // Control and non-ASCII bytes are shown as \xNN so that the message stays one readable line.
+    std::string shown;
+    for (const char c : token.text.substr(0, 60)) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7f) {
+            shown += c;
+        } else {
+            static const char digits[] = "0123456789abcdef";
+            shown += "\\x";
+            shown += digits[byte >> 4];
+            shown += digits[byte & 15];
+        }
+    }
+    if (token.text.size() > 60) shown += "...";
+    return quoted(std::string_view(shown));
 }
 
 TokenStream::TokenStream(std::string_view text, std::string_view file_name)
-    : text_(text), file_name_(file_name) {}
+    : text_(text), file_name_(file_name) {
+    // Editors on some systems start UTF-8 files with a byte-order mark: skip it.
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
+}
 
 const Token& TokenStream::peek() {
     if (!peeked_) peeked_ = scan();
@@ -139,7 +159,11 @@ double NumberReader::number(std::string_view what) {
     const Token token = take(what);
     double value = 0.0;
     switch (parse_double(token.text, value)) {
-    case Parsed::ok: return value;
+    case Parsed::ok:
+        if (std::abs(value) > kLargestNumber)
+            tokens_.fail(token, "expected a number between -1e15 and 1e15 for " + std::string(what) + ", found " +
+                                    describe(token));
+        return value;
     case Parsed::not_finite:
         tokens_.fail(token, "expected a finite number for " + std::string(what) + ", found " + describe(token));
     case Parsed::malformed: break;

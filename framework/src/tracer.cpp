@@ -9,6 +9,7 @@ RayStats& RayStats::operator+=(const RayStats& other) {
     shadow += other.shadow;
     reflected += other.reflected;
     refracted += other.refracted;
+    pixels_cut_short += other.pixels_cut_short;
     return *this;
 }
 
@@ -16,6 +17,7 @@ Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight
     const Color parent_weight = path_weight_;
     const Color path_weight = parent_weight * weight;
     if (kind != RayKind::eye && glm::all(glm::lessThan(path_weight, Color(settings_.min_weight)))) return Color(0.0);
+    if (!within_budget()) return Color(0.0);
     switch (kind) {
     case RayKind::eye: ++stats_.eye; break;
     case RayKind::shadow: ++stats_.shadow; break;
@@ -51,10 +53,21 @@ Color Tracer::shade(const Ray& ray, int depth) const {
 
 Color Tracer::trace_pixel(double x, double y) const {
     path_weight_ = Color(1.0);
-    return trace(primary_ray(scene_.camera(), x, y), 1, RayKind::eye, Color(1.0));
+    pixel_rays_ = 0;
+    pixel_cut_short_ = false;
+    const Color color = trace(primary_ray(scene_.camera(), x, y), 1, RayKind::eye, Color(1.0));
+    if (pixel_cut_short_) ++stats_.pixels_cut_short;
+    return color;
+}
+
+bool Tracer::within_budget() const {
+    if (++pixel_rays_ <= settings_.max_rays_per_pixel) return true;
+    pixel_cut_short_ = true;
+    return false;
 }
 
 bool Tracer::occluded(const Ray& ray, double distance) const {
+    if (!within_budget()) return true; // over budget: no more light is gathered for this pixel
     ++stats_.shadow;
     return scene_.occluded(ray, Interval{0.0, distance});
 }

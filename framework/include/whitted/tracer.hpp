@@ -20,6 +20,7 @@ struct RayStats {
     std::uint64_t shadow = 0;
     std::uint64_t reflected = 0;
     std::uint64_t refracted = 0;
+    std::uint64_t pixels_cut_short = 0; // pixels whose ray tree reached RenderSettings::max_rays_per_pixel
 
     std::uint64_t total() const { return eye + shadow + reflected + refracted; }
     RayStats& operator+=(const RayStats& other);
@@ -34,6 +35,10 @@ struct RenderSettings {
     // every channel is not traced. 1/1024 cannot move an 8-bit pixel by half a
     // step for colours up to 2; 0 traces every ray down to max_depth.
     double min_weight = 1.0 / 1024.0;
+    // A last guard for ray trees that would grow without bound (glass at a huge
+    // depth with min_weight 0): once a pixel has cast this many rays, its
+    // further secondary rays see black and the pixel is counted as cut short.
+    std::uint32_t max_rays_per_pixel = 10000;
 };
 
 class Tracer {
@@ -63,7 +68,12 @@ class Tracer {
     const Scene& scene_;
     const RenderSettings& settings_;
     RayStats& stats_;
-    mutable Color path_weight_{1.0}; // accumulated weight of the ray being traced
+    /// Counts one more ray for the current pixel; false once the pixel is over budget.
+    bool within_budget() const;
+
+    mutable Color path_weight_{1.0};        // accumulated weight of the ray being traced
+    mutable std::uint32_t pixel_rays_ = 0;  // rays cast so far for the current pixel
+    mutable bool pixel_cut_short_ = false;
 };
 
 } // namespace whitted
