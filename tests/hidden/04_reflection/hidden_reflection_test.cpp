@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace whitted;
@@ -82,20 +83,22 @@ TEST(HiddenReflection, ACornerMirrorSendsTheRayBackAfterTwoReflections) {
     }
 }
 
-TEST(HiddenReflection, AMirrorRoomCastsOneRayPerLevelWithoutMinWeight) {
-    // A ray bouncing between floor and ceiling of perfect mirrors (Ks = 1, min_weight 0)
-    // never fades: max_depth D gives exactly D - 1 reflected rays and the background
-    // is never reached (black: the mirrors have Kd = 0).
-    for (int max_depth : {1, 4, 9}) {
+TEST(HiddenReflection, ALightGuideOfTwoMirrorStripsStopsAtMaxDepth) {
+    // Mirror strips y = 0 and y = 1 for 0 < x < 10 (Ks = 0.9, Kd = 0, min_weight 0). The
+    // eye ray from (0.5, 0.5, 0) along (1, -2, 0) hits them at x = 0.75, 1.25, ..., 9.75:
+    // 19 hits, then it leaves at the end (white background). max_depth D allows
+    // min(D - 1, 19) reflected rays; the background is reached only for D >= 20, at 0.9^19.
+    for (int max_depth : {5, 19, 20, 30}) {
+        SCOPED_TRACE(::testing::Message() << "max_depth " << max_depth);
         SceneData data;
         data.background = Color(1.0);
-        data.materials = {mirror_material(1.0)};
-        data.primitives.push_back({Plane{Point3(0.0, -1.0, 0.0), Vec3(0.0, 1.0, 0.0)}, 0});
-        data.primitives.push_back({Plane{Point3(0.0, 2.0, 0.0), Vec3(0.0, -1.0, 0.0)}, 0});
+        data.materials = {mirror_material(0.9)};
+        data.primitives.push_back({Box{Point3(0.0, -1.0, -1.0), Point3(10.0, 0.0, 1.0)}, 0});
+        data.primitives.push_back({Box{Point3(0.0, 1.0, -1.0), Point3(10.0, 2.0, 1.0)}, 0});
         TracerRig rig(std::move(data), 4, max_depth, 0.0);
-        const Color c = rig.trace(make_ray(Point3(0.0), Vec3(0.2, 1.0, 0.1)));
-        EXPECT_EQ(rig.stats.reflected, static_cast<std::uint64_t>(max_depth - 1)) << "max_depth " << max_depth;
-        EXPECT_TRUE(near(c, Color(0.0), 0.0)) << "max_depth " << max_depth;
+        const Color c = rig.trace(make_ray(Point3(0.5, 0.5, 0.0), Vec3(1.0, -2.0, 0.0)));
+        EXPECT_EQ(rig.stats.reflected, static_cast<std::uint64_t>(std::min(max_depth - 1, 19)));
+        EXPECT_TRUE(near(c, Color(max_depth >= 20 ? std::pow(0.9, 19) : 0.0), 1e-12));
     }
 }
 
