@@ -38,4 +38,64 @@ inline Color trace_one(const Scene& scene, const Ray& ray, int stage = 6, int ma
     return tracer.trace(ray, 1, RayKind::eye, Color(1.0));
 }
 
+// ---- Labs 4-6: secondary rays --------------------------------------------------
+
+/// A unit direction at theta degrees from +z whose tangential part points at phi
+/// degrees from +x (phi = 0 is direction_at(theta)).
+inline Vec3 direction_at(double theta_degrees, double phi_degrees) {
+    const double theta = radians(theta_degrees), phi = radians(phi_degrees);
+    return Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+}
+
+/// The angle between two unit vectors, in degrees.
+inline double degrees_between(const Vec3& a, const Vec3& b) {
+    return degrees(std::acos(glm::clamp(glm::dot(a, b), -1.0, 1.0)));
+}
+
+/// A mirror: no diffuse light, mirror weight Ks = ks with the given specular colour.
+inline Material mirror_material(double ks, Color specular_color = Color(1.0)) {
+    Material m;
+    m.diffuse = 0.0;
+    m.specular = ks;
+    m.specular_color = specular_color;
+    return m;
+}
+
+/// Clear glass: no diffuse light, no mirror term (Ks = 0), transmittance t, index ior.
+inline Material glass_material(double ior, double transmittance = 1.0) {
+    Material m;
+    m.diffuse = 0.0;
+    m.transmittance = transmittance;
+    m.ior = ior;
+    return m;
+}
+
+/// A scene, its render settings, ray counts and a tracer, for tests that call a
+/// lab function directly or count the rays one trace casts. min_weight defaults
+/// to 0: every secondary ray is traced down to max_depth.
+struct TracerRig {
+    TracerRig(SceneData data, int stage, int max_depth, double min_weight = 0.0)
+        : scene(std::move(data)), settings{stage, max_depth, min_weight}, tracer(scene, settings, stats) {}
+    TracerRig(const TracerRig&) = delete;
+    TracerRig& operator=(const TracerRig&) = delete;
+
+    /// The colour seen along an eye ray (depth 1).
+    Color trace(const Ray& ray) const { return tracer.trace(ray, 1, RayKind::eye, Color(1.0)); }
+
+    Scene scene;
+    RenderSettings settings;
+    RayStats stats;
+    Tracer tracer;
+};
+
+/// A hit at `point` on a surface whose outward normal is `outward`, reached by a
+/// ray arriving along -wo: normal and front_face as an intersection routine would
+/// set them. Material index `material`.
+inline Hit hit_seen_from(const Point3& point, const Vec3& outward, const Vec3& wo, std::uint32_t material = 0) {
+    Hit hit = make_hit(Ray{point + wo, -wo}, 1.0, outward);
+    hit.point = point;
+    hit.material = material;
+    return hit;
+}
+
 } // namespace whitted::testing_helpers

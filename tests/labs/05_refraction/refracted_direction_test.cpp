@@ -1,7 +1,10 @@
-// Spot checks of the reference labs against values derived by hand.
+// Lab 5, refracted_direction(): Snell's law eta_i sin(theta_i) = eta_t sin(theta_t),
+// checked against values worked out by hand. wo points back along the incoming
+// ray; the refracted direction continues on the other side of the surface (-n).
 #include "whitted/labs.hpp"
 
 #include "lab_helpers.hpp"
+#include "test_helpers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,30 +13,87 @@
 using namespace whitted;
 using namespace whitted::testing_helpers;
 
-
-TEST(Refraction, SnellAngleAt45DegreesIntoGlass) {
-    // sin(theta_t) = sin(45) / 1.5  =>  theta_t = 28.1255 degrees, on the other side of the surface.
+TEST(RefractedDirection, At45DegreesIntoGlassBendsTo28Point1255Degrees) {
+    // sin(theta_t) = sin(45) / 1.5 = 0.471405, theta_t = 28.1255 degrees. The ray keeps
+    // going forward: wo leans towards +x, so wt = (-sin(theta_t), 0, -cos(theta_t)).
     const auto wt = refracted_direction(direction_at(45.0), kUp, 1.0, 1.5);
-    ASSERT_TRUE(wt.has_value());
-    EXPECT_NEAR(degrees(std::acos(-wt->z)), 28.1255, 1e-4);
-    EXPECT_LT(wt->x, 0.0); // continues forward: opposite tangent side from wo
-    EXPECT_NEAR(glm::length(*wt), 1.0, 1e-12);
+    ASSERT_TRUE(wt.has_value()) << "45 degrees from air into glass is not total internal reflection";
+    EXPECT_NEAR(degrees_between(*wt, -kUp), 28.1255, 1e-4) << "angle between wt and -n";
+    const double sin_t = std::sin(radians(45.0)) / 1.5;
+    EXPECT_TRUE(near(*wt, Vec3(-sin_t, 0.0, -std::sqrt(1.0 - sin_t * sin_t)), 1e-14));
 }
 
-TEST(Refraction, SnellAngleAt80DegreesIntoGlass) {
+TEST(RefractedDirection, At80DegreesIntoGlassBendsTo41Point0364Degrees) {
+    // sin(theta_t) = sin(80) / 1.5 = 0.656539, theta_t = 41.0364 degrees.
     const auto wt = refracted_direction(direction_at(80.0), kUp, 1.0, 1.5);
     ASSERT_TRUE(wt.has_value());
-    EXPECT_NEAR(degrees(std::acos(-wt->z)), 41.0364, 1e-4);
+    EXPECT_NEAR(degrees_between(*wt, -kUp), 41.0364, 1e-4);
+    EXPECT_LT(wt->x, 0.0) << "the refracted ray must keep going forward (tangent part opposite to wo's)";
 }
 
-TEST(Refraction, NormalIncidenceGoesStraightThrough) {
+TEST(RefractedDirection, NormalIncidenceGoesStraightThrough) {
+    // theta_i = 0 gives theta_t = 0: wt = -n, with no NaN from the zero tangent.
     const auto wt = refracted_direction(kUp, kUp, 1.0, 1.5);
     ASSERT_TRUE(wt.has_value());
-    EXPECT_NEAR(wt->z, -1.0, 1e-15);
+    EXPECT_TRUE(near(*wt, -kUp, 1e-15));
 }
 
-TEST(Refraction, TotalInternalReflectionBeyondTheCriticalAngle) {
-    // Critical angle glass -> air: asin(1 / 1.5) = 41.8103 degrees.
-    EXPECT_TRUE(refracted_direction(direction_at(41.80), kUp, 1.5, 1.0).has_value());
-    EXPECT_FALSE(refracted_direction(direction_at(41.82), kUp, 1.5, 1.0).has_value());
+TEST(RefractedDirection, LeavingGlassBendsAwayFromTheNormal) {
+    // From glass into air at 20 degrees: sin(theta_t) = 1.5 sin(20) = 0.513030,
+    // theta_t = 30.8659 degrees (larger than theta_i).
+    const auto wt = refracted_direction(direction_at(20.0), kUp, 1.5, 1.0);
+    ASSERT_TRUE(wt.has_value());
+    EXPECT_NEAR(degrees_between(*wt, -kUp), 30.8659, 1e-4);
+    // The way back: leaving at 28.1255 degrees comes out at 45 (the path is reversible).
+    const auto back = refracted_direction(direction_at(std::asin(std::sin(radians(45.0)) / 1.5) * 180.0 / kPi), kUp, 1.5, 1.0);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_NEAR(degrees_between(*back, -kUp), 45.0, 1e-9);
+}
+
+TEST(RefractedDirection, IsAUnitVectorOnTheFarSideOfTheSurface) {
+    for (double theta : {0.0, 10.0, 35.0, 60.0, 89.0}) {
+        for (double eta_t : {1.2, 1.5, 2.0}) {
+            SCOPED_TRACE(::testing::Message() << "air into eta " << eta_t << " at " << theta << " degrees");
+            const auto wt = refracted_direction(direction_at(theta, 30.0), kUp, 1.0, eta_t);
+            ASSERT_TRUE(wt.has_value());
+            EXPECT_NEAR(glm::length(*wt), 1.0, 1e-14) << "wt must be a unit vector";
+            EXPECT_LT(glm::dot(*wt, kUp), 0.0) << "wt must go through the surface, against n";
+        }
+    }
+}
+
+TEST(RefractedDirection, StaysInThePlaneOfIncidence) {
+    // wo at 50 degrees, azimuth 120 degrees: wt is a mix of n and wo's tangent part,
+    // so it is perpendicular to n x wo, and its tangent part points away from wo's.
+    const Vec3 wo = direction_at(50.0, 120.0);
+    const auto wt = refracted_direction(wo, kUp, 1.0, 1.5);
+    ASSERT_TRUE(wt.has_value());
+    EXPECT_NEAR(glm::dot(*wt, glm::cross(kUp, wo)), 0.0, 1e-14) << "wt must lie in the plane of wo and n";
+    EXPECT_LT(wt->x * wo.x + wt->y * wo.y, 0.0) << "the tangent part of wt must be opposite to wo's";
+}
+
+TEST(RefractedDirection, WorksForANormalThatIsNotAnAxis) {
+    // Rotating the whole setup must rotate the answer: n = (0, 1, 0), wo at 45 degrees
+    // in the xy-plane gives wt = (-sin(theta_t), -cos(theta_t), 0) with sin(theta_t) = 0.471405.
+    const Vec3 n(0.0, 1.0, 0.0);
+    const Vec3 wo(std::sin(radians(45.0)), std::cos(radians(45.0)), 0.0);
+    const auto wt = refracted_direction(wo, n, 1.0, 1.5);
+    ASSERT_TRUE(wt.has_value());
+    const double sin_t = std::sin(radians(45.0)) / 1.5;
+    EXPECT_TRUE(near(*wt, Vec3(-sin_t, -std::sqrt(1.0 - sin_t * sin_t), 0.0), 1e-14));
+}
+
+TEST(RefractedDirection, TotalInternalReflectionGivesNoDirectionJustPastTheCriticalAngle) {
+    // Critical angle from glass into air: asin(1 / 1.5) = 41.8103 degrees.
+    // At 41.82 degrees 1.5 sin(theta_i) > 1: there is no refracted ray (std::nullopt).
+    EXPECT_FALSE(refracted_direction(direction_at(41.82), kUp, 1.5, 1.0).has_value())
+        << "past the critical angle there must be no refracted direction (not NaN, not the mirror direction)";
+    EXPECT_FALSE(refracted_direction(direction_at(70.0), kUp, 1.5, 1.0).has_value());
+}
+
+TEST(RefractedDirection, JustBeforeTheCriticalAngleTheRayLeavesAlmostAlongTheSurface) {
+    // At 41.80 degrees: sin(theta_t) = 1.5 sin(41.80) = 0.999799, theta_t = 88.8504 degrees.
+    const auto wt = refracted_direction(direction_at(41.80), kUp, 1.5, 1.0);
+    ASSERT_TRUE(wt.has_value()) << "41.80 degrees is below the critical angle of 41.8103";
+    EXPECT_NEAR(degrees_between(*wt, -kUp), 88.8504, 1e-4);
 }

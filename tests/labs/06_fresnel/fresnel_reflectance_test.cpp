@@ -1,4 +1,7 @@
-// Spot checks of the reference labs against values derived by hand.
+// Lab 6, fresnel_reflectance(): Kr = (Rs + Rp) / 2 with
+//   Rs = ((eta_i cos_i - eta_t cos_t) / (eta_i cos_i + eta_t cos_t))^2,
+//   Rp = ((eta_i cos_t - eta_t cos_i) / (eta_i cos_t + eta_t cos_i))^2,
+// cos_t from Snell's law, and Kr = 1 on total internal reflection.
 #include "whitted/labs.hpp"
 
 #include <gtest/gtest.h>
@@ -7,24 +10,75 @@
 
 using namespace whitted;
 
+namespace {
+double kr_at(double theta_degrees, double eta_i, double eta_t) {
+    return fresnel_reflectance(std::cos(radians(theta_degrees)), eta_i, eta_t);
+}
+} // namespace
 
-TEST(Fresnel, FourPercentAtNormalIncidenceOnGlass) {
-    // ((1 - 1.5) / (1 + 1.5))^2 = 0.04
-    EXPECT_NEAR(fresnel_reflectance(1.0, 1.0, 1.5), 0.04, 1e-12);
+TEST(FresnelReflectance, IsFourPercentAtNormalIncidenceOnGlass) {
+    // cos_i = cos_t = 1: Rs = Rp = ((1 - 1.5) / (1 + 1.5))^2 = 0.04, so Kr = 0.04.
+    EXPECT_NEAR(kr_at(0.0, 1.0, 1.5), 0.04, 1e-12) << "Rs = Rp = 0.04 here: is (Rs + Rp) halved?";
 }
 
-TEST(Fresnel, SpotValuesAt45And80Degrees) {
-    EXPECT_NEAR(fresnel_reflectance(std::cos(radians(45.0)), 1.0, 1.5), 0.050240, 1e-6);
-    EXPECT_NEAR(fresnel_reflectance(std::cos(radians(80.0)), 1.0, 1.5), 0.387704, 1e-6);
+TEST(FresnelReflectance, MatchesTheExactEquationsAt45And80Degrees) {
+    // Exact Fresnel, air into glass: 0.050240 at 45 degrees, 0.387704 at 80.
+    // Schlick's approximation would give 0.409910 at 80 degrees: too much.
+    EXPECT_NEAR(kr_at(45.0, 1.0, 1.5), 0.050240, 1e-6);
+    EXPECT_NEAR(kr_at(80.0, 1.0, 1.5), 0.387704, 1e-6) << "0.409910 would be Schlick's approximation, not (Rs + Rp) / 2";
 }
 
-TEST(Fresnel, TotalInternalReflectionReflectsEverything) {
-    EXPECT_EQ(fresnel_reflectance(std::cos(radians(60.0)), 1.5, 1.0), 1.0);
+TEST(FresnelReflectance, IsHalfOfRsAtBrewstersAngle) {
+    // At Brewster's angle tan(theta_i) = 1.5 the reflected and refracted rays are
+    // perpendicular: cos_t = sin_i, so Rp = 0 and Rs = ((1 - 1.5^2) / (1 + 1.5^2))^2
+    // = (1.25 / 3.25)^2 = 0.147929. Kr = Rs / 2 = 0.0739645.
+    EXPECT_NEAR(fresnel_reflectance(std::cos(std::atan(1.5)), 1.0, 1.5), 0.0739645, 1e-7)
+        << "Rp vanishes here: Kr must be Rs / 2";
 }
 
-TEST(Fresnel, SameOnBothSidesAtMatchingAngles) {
-    // Reciprocity: light entering at 45 degrees and leaving along the refracted path reflect alike.
+TEST(FresnelReflectance, LeavingGlassAt30Degrees) {
+    // Glass into air: sin_t = 1.5 sin(30) = 0.75, cos_t = 0.661438, cos_i = 0.866025.
+    // Rs = ((1.299038 - 0.661438) / 1.960476)^2 = 0.105773,
+    // Rp = ((0.992157 - 0.866025) / 1.858182)^2 = 0.004608, Kr = 0.055190.
+    EXPECT_NEAR(kr_at(30.0, 1.5, 1.0), 0.0551902, 1e-7) << "cos_t comes from sin_t = eta_i / eta_t sin_i";
+}
+
+TEST(FresnelReflectance, TotalInternalReflectionReflectsEverything) {
+    // Glass into air beyond asin(1 / 1.5) = 41.8103 degrees: Kr is exactly 1 (no NaN).
+    EXPECT_EQ(kr_at(41.82, 1.5, 1.0), 1.0);
+    EXPECT_EQ(kr_at(60.0, 1.5, 1.0), 1.0);
+    EXPECT_EQ(kr_at(89.0, 1.5, 1.0), 1.0);
+}
+
+TEST(FresnelReflectance, IsTheSameOnBothSidesAlongTheSamePath) {
+    // Light entering at 45 degrees and light leaving along the refracted path
+    // (theta_t = 28.1255 degrees) reflect the same fraction.
     const double theta_t = std::asin(std::sin(radians(45.0)) / 1.5);
-    EXPECT_NEAR(fresnel_reflectance(std::cos(radians(45.0)), 1.0, 1.5),
-                fresnel_reflectance(std::cos(theta_t), 1.5, 1.0), 1e-12);
+    EXPECT_NEAR(kr_at(45.0, 1.0, 1.5), fresnel_reflectance(std::cos(theta_t), 1.5, 1.0), 1e-12);
+}
+
+TEST(FresnelReflectance, GrazingLightIsAlmostAllReflected) {
+    // As theta_i -> 90 degrees cos_i -> 0 and Rs, Rp -> 1.
+    EXPECT_GT(fresnel_reflectance(1e-6, 1.0, 1.5), 0.9999);
+    EXPECT_LE(fresnel_reflectance(1e-6, 1.0, 1.5), 1.0);
+}
+
+TEST(FresnelReflectance, GrowsWithTheAngleFromAirIntoGlass) {
+    // From air into glass Kr rises from 0.04 to 1 without ever falling (Rp dips to 0
+    // at Brewster's angle, but Rs grows faster).
+    double previous = kr_at(0.0, 1.0, 1.5);
+    for (double theta = 1.0; theta < 90.0; theta += 1.0) {
+        const double kr = kr_at(theta, 1.0, 1.5);
+        EXPECT_GE(kr, previous) << "Kr fell between " << theta - 1.0 << " and " << theta << " degrees";
+        EXPECT_LE(kr, 1.0) << "at " << theta << " degrees";
+        previous = kr;
+    }
+}
+
+TEST(FresnelReflectance, EqualIndicesReflectNothing) {
+    // eta_i = eta_t: no interface, cos_t = cos_i, Rs = Rp = 0.
+    for (double theta : {0.0, 30.0, 60.0, 85.0}) {
+        EXPECT_NEAR(kr_at(theta, 1.0, 1.0), 0.0, 1e-15) << "air to air at " << theta << " degrees";
+        EXPECT_NEAR(kr_at(theta, 1.5, 1.5), 0.0, 1e-15) << "glass to glass at " << theta << " degrees";
+    }
 }

@@ -1,0 +1,19 @@
+// Mistake: Reflects about hit.geometric_normal instead of the shading normal hit.normal.
+// Symptom: Smooth (vertex-normal) meshes reflect like flat facets: reflections on teapots look faceted.
+#include "whitted/labs.hpp"
+
+namespace whitted {
+
+Vec3 mirror_direction(const Vec3& wo, const Vec3& n) {
+    // r = 2 (V . n) n - V
+    return 2.0 * glm::dot(wo, n) * n - wo;
+}
+
+Color reflection(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth) {
+    const Material& material = tracer.scene().material(hit);
+    const Ray reflected = spawn_ray(hit, mirror_direction(wo, hit.geometric_normal));
+    // I(r) weighted by the specular reflection coefficient.
+    return tracer.trace(reflected, depth + 1, RayKind::reflected, material.specular * material.specular_color);
+}
+
+} // namespace whitted
