@@ -36,7 +36,7 @@ endif
 
 # Instructors: rewrite every reference picture from the reference solution.
 references: build
-	@cd $(BUILD_DIR) && WHITTED_UPDATE_REFERENCES=1 ctest -R '^(lab[0-9]\.Lab[0-9]Image|integration\.)' -j$(JOBS) --output-on-failure
+	@cd $(BUILD_DIR) && WHITTED_UPDATE_REFERENCES=1 ctest -R '^(lab[0-9]\.(Hidden)?Lab[0-9]Image|integration\.)' -j$(JOBS) --output-on-failure
 	@git status --short -- tests
 
 # Instructors: write the student handout (no solution, hidden tests or mistakes) to OUT.
