@@ -24,8 +24,9 @@ double angle_degrees(const Vec3& a, const Vec3& b) { return std::acos(glm::dot(a
 TEST(PrimaryRay, StartsAtTheEyeWithAUnitDirection) {
     const Camera camera = Camera::create({1, 2, 3}, {4, 6, 3}, {0, 0, 1}, 50.0, 40, 30);
     const Ray ray = primary_ray(camera, 7.5, 21.5);
-    EXPECT_TRUE(near(ray.origin, camera.eye));
-    EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-15);
+    EXPECT_TRUE(near(ray.origin, camera.eye)) << "every primary ray starts at the eye";
+    EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-15)
+        << "ray directions must have length 1 (normalize them): the intersection routines rely on it";
 }
 
 TEST(PrimaryRay, CentrePixelOfAnOddResolutionLooksExactlyAtTheTarget) {
@@ -33,8 +34,8 @@ TEST(PrimaryRay, CentrePixelOfAnOddResolutionLooksExactlyAtTheTarget) {
     // so d = normalize(-df ze) = (at - eye) / df, and eye + df d = at.
     const Camera camera = Camera::create({1, 2, 3}, {4, 6, 3}, {0, 0, 1}, 50.0, 5, 3);
     const Ray ray = primary_ray(camera, 2.5, 1.5);
-    EXPECT_TRUE(near(ray.direction, {0.6, 0.8, 0}, 1e-15));
-    EXPECT_TRUE(near(ray.at(camera.df), camera.at, 1e-14));
+    EXPECT_TRUE(near(ray.direction, {0.6, 0.8, 0}, 1e-15)) << "the centre of the viewport looks straight at `at`";
+    EXPECT_TRUE(near(ray.at(camera.df), camera.at, 1e-14)) << "eye + df d should be `at`";
 }
 
 TEST(PrimaryRay, BottomLeftPixelCentreGoesDownAndLeft) {
@@ -42,9 +43,11 @@ TEST(PrimaryRay, BottomLeftPixelCentreGoesDownAndLeft) {
     // w (0.25 - 0.5) = -0.5 and h (0.25 - 0.5) = -0.5, so d = normalize(-0.5, -0.5, -1) (y counts upwards).
     const Camera camera = Camera::create({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 90.0, 2, 2);
     const Ray ray = primary_ray(camera, 0.5, 0.5);
-    EXPECT_TRUE(near(ray.direction, glm::normalize(Vec3(-0.5, -0.5, -1.0)), 1e-15));
+    EXPECT_TRUE(near(ray.direction, glm::normalize(Vec3(-0.5, -0.5, -1.0)), 1e-15))
+        << "pixel (0, 0) is the bottom-left one: its ray goes left (-xe) and down (-ye); x is already a pixel centre";
     const Ray top_right = primary_ray(camera, 1.5, 1.5);
-    EXPECT_TRUE(near(top_right.direction, glm::normalize(Vec3(0.5, 0.5, -1.0)), 1e-15));
+    EXPECT_TRUE(near(top_right.direction, glm::normalize(Vec3(0.5, 0.5, -1.0)), 1e-15))
+        << "pixel (1, 1) is the top-right one: its ray goes right and up";
 }
 
 TEST(PrimaryRay, TopAndBottomEdgesOfTheViewPlaneSpanTheVerticalFov) {
@@ -53,7 +56,9 @@ TEST(PrimaryRay, TopAndBottomEdgesOfTheViewPlaneSpanTheVerticalFov) {
     const Camera camera = Camera::create({3, 1, 4}, {0, 0, 0}, {0, 1, 0}, 35.0, 120, 80);
     const Ray bottom = primary_ray(camera, 60.0, 0.0);
     const Ray top = primary_ray(camera, 60.0, 80.0);
-    EXPECT_NEAR(angle_degrees(bottom.direction, top.direction), 35.0, 1e-10);
+    EXPECT_NEAR(angle_degrees(bottom.direction, top.direction), 35.0, 1e-10)
+        << "the view plane is h = 2 df tan(fovy / 2) high, from y = 0 to y = ResY";
+    EXPECT_GT(glm::dot(top.direction - bottom.direction, camera.ye), 0.0) << "larger y must look further up (along ye)";
 }
 
 TEST(PrimaryRay, NonSquareImagesWidenTheHorizontalFov) {
@@ -62,7 +67,8 @@ TEST(PrimaryRay, NonSquareImagesWidenTheHorizontalFov) {
     const Camera camera = Camera::create({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 90.0, 200, 100);
     const Ray left = primary_ray(camera, 0.0, 50.0);
     const Ray right = primary_ray(camera, 200.0, 50.0);
-    EXPECT_NEAR(angle_degrees(left.direction, right.direction), 2.0 * std::atan(2.0) * 180.0 / kPi, 1e-10);
+    EXPECT_NEAR(angle_degrees(left.direction, right.direction), 2.0 * std::atan(2.0) * 180.0 / kPi, 1e-10)
+        << "x spans the width w = ResX / ResY h, y spans the height h: are w and h swapped or equal?";
     EXPECT_TRUE(near(left.direction, glm::normalize(Vec3(-2, 0, -1)), 1e-15));
 }
 
@@ -79,4 +85,26 @@ TEST(Camera, WithResolutionKeepsTheVerticalFovAndWidensTheWidth) {
     EXPECT_TRUE(near(wide.ze, square.ze, 0.0));
     // The centre ray still looks at `at`.
     EXPECT_TRUE(near(primary_ray(wide, 150.0, 50.0).direction, -square.ze, 1e-15));
+}
+
+TEST(PrimaryRay, MovesAlongXeAsXGrowsInWholePixelSteps) {
+    // eye (0, 0, 5), at the origin, fovy 90, 4 x 2: df = 5, h = 2 df tan 45 = 10, w = 4 / 2 h = 20.
+    // x = 2.5 (centre of pixel 2): w (2.5 / 4 - 1/2) = 2.5 along xe = +x; y = 1 is mid height.
+    // d = normalize(2.5, 0, -5). Adding another half pixel would give 5 instead of 2.5.
+    const Camera camera = Camera::create({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 90.0, 4, 2);
+    EXPECT_TRUE(near(primary_ray(camera, 2.5, 1.0).direction, glm::normalize(Vec3(2.5, 0, -5)), 1e-15))
+        << "x is the viewport position itself (the framework already passes pixel centres)";
+    EXPECT_TRUE(near(primary_ray(camera, 0.5, 1.0).direction, glm::normalize(Vec3(-7.5, 0, -5)), 1e-15));
+}
+
+TEST(PrimaryRay, UsesTheCameraFrameNotTheWorldAxes) {
+    // eye (1, 2, 3), at (4, 6, 3), up +z: ze = (eye - at) / 5 = (-0.6, -0.8, 0),
+    // xe = up x ze = (0.8, -0.6, 0), ye = ze x xe = (0, 0, 1). fovy 90, 20 x 10: h = 10, w = 20.
+    // (x, y) = (15, 10): w (15/20 - 1/2) = 5 along xe, h (10/10 - 1/2) = 5 along ye, -df ze = (3, 4, 0).
+    // d = (3, 4, 0) + 5 (0.8, -0.6, 0) + 5 (0, 0, 1) = (7, 1, 5).
+    const Camera camera = Camera::create({1, 2, 3}, {4, 6, 3}, {0, 0, 1}, 90.0, 20, 10);
+    const Ray ray = primary_ray(camera, 15.0, 10.0);
+    EXPECT_TRUE(near(ray.direction, glm::normalize(Vec3(7, 1, 5)), 1e-15))
+        << "d = w (x / ResX - 1/2) xe + h (y / ResY - 1/2) ye - df ze, normalised";
+    EXPECT_TRUE(near(ray.origin, {1, 2, 3}));
 }

@@ -1,4 +1,7 @@
-// Spot checks of the reference labs against values derived by hand.
+// spawn_ray: a new ray from a hit point that cannot find the surface it starts on, whatever
+// its angle and wherever the point lies. The origin moves a tiny distance off the surface, to
+// the side the direction leaves towards; the direction is kept as it is.
+#include "test_helpers.hpp"
 #include "whitted/labs.hpp"
 
 #include <gtest/gtest.h>
@@ -6,6 +9,40 @@
 #include <cmath>
 
 using namespace whitted;
+using whitted::testing_helpers::near;
+
+namespace {
+
+/// A hit on the floor y = 0 (normal +y) at the given point, as intersect_plane reports it.
+Hit floor_hit(const Point3& point) {
+    const auto hit = intersect_plane(Ray{point + Vec3(0.3, 2.0, 0.1), glm::normalize(Vec3(-0.3, -2.0, -0.1))},
+                                     Plane{Point3(0.0), Vec3(0, 1, 0)}, Interval{});
+    return hit.value();
+}
+
+} // namespace
+
+TEST(SpawnRay, LeavingRayStartsJustAboveTheSurfaceWithItsDirectionUnchanged) {
+    // A ray leaving upwards (+y) must start on the +y side of the floor, close to the hit point:
+    // within 1e-5 (1 + |p|) of it, so that contact shadows and thin gaps are not skipped.
+    const Hit hit = floor_hit({1.5, 0.0, -2.0});
+    const Vec3 up_and_away = glm::normalize(Vec3(1.0, 2.0, -0.5));
+    const Ray ray = spawn_ray(hit, up_and_away);
+    EXPECT_GT(ray.origin.y, 0.0) << "the origin must move off the surface, to the side the ray leaves towards";
+    EXPECT_LT(glm::length(ray.origin - hit.point), 1e-5 * 3.0) << "the offset must be tiny, not a visible gap";
+    EXPECT_EQ(ray.direction, up_and_away) << "spawn_ray moves the origin only";
+    EXPECT_FALSE(intersect_plane(ray, Plane{Point3(0.0), Vec3(0, 1, 0)}, Interval{}))
+        << "the new ray must not find the floor it starts on";
+}
+
+TEST(SpawnRay, RayIntoTheSurfaceStartsJustBelowIt) {
+    // A ray going into the surface (dot(direction, normal) < 0, a refracted ray) must start on
+    // the other side: below the floor, where it is going.
+    const Hit hit = floor_hit({-0.5, 0.0, 3.0});
+    const Ray ray = spawn_ray(hit, glm::normalize(Vec3(0.2, -1.0, 0.1)));
+    EXPECT_LT(ray.origin.y, 0.0) << "offset along -normal when the ray goes into the surface";
+    EXPECT_LT(glm::length(ray.origin - hit.point), 1e-5 * 4.0);
+}
 
 
 TEST(SpawnRay, GrazingRaysLeavingASphereDoNotHitItAgain) {
@@ -23,7 +60,7 @@ TEST(SpawnRay, GrazingRaysLeavingASphereDoNotHitItAgain) {
         const Vec3 grazing = glm::normalize(tangent + std::tan(radians(0.01)) * n);
         if (intersect_sphere(spawn_ray(*hit, grazing), sphere, Interval{})) ++self_hits;
     }
-    EXPECT_EQ(self_hits, 0);
+    EXPECT_EQ(self_hits, 0) << "feelers leaving at 89.99 degrees found the sphere they start on (shadow acne)";
 }
 
 TEST(SpawnRay, RaysIntoTheSurfaceFindTheFarWallNotTheNearOne) {
@@ -39,7 +76,8 @@ TEST(SpawnRay, RaysIntoTheSurfaceFindTheFarWallNotTheNearOne) {
         const auto inside = intersect_sphere(spawn_ray(*hit, -n), sphere, Interval{});
         if (!inside || inside->front_face || std::abs(inside->t - 2.0 * sphere.radius) > 1e-6) ++wrong;
     }
-    EXPECT_EQ(wrong, 0);
+    EXPECT_EQ(wrong, 0) << "rays into a sphere must start inside it and meet the far wall at t = 2 r (1e-6): "
+                           "offset to the side the ray goes, by a tiny amount";
 }
 
 TEST(SpawnRay, GrazingRaysAlongAFarAwayTiltedPlaneDoNotHitIt) {
@@ -56,5 +94,5 @@ TEST(SpawnRay, GrazingRaysAlongAFarAwayTiltedPlaneDoNotHitIt) {
         const Vec3 grazing = glm::normalize(tangent + 1e-7 * hit->normal);
         if (intersect_plane(spawn_ray(*hit, grazing), plane, Interval{})) ++self_hits;
     }
-    EXPECT_EQ(self_hits, 0);
+    EXPECT_EQ(self_hits, 0) << "far from the origin rounding errors grow: scale the offset with the coordinates";
 }

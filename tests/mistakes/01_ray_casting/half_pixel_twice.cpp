@@ -1,4 +1,5 @@
-// Mistake: adds another half pixel to x, which the framework already passes as a pixel centre.
+// Mistake: primary_ray adds another half pixel to x, although the framework already passes pixel centres.
+// Symptom: the picture is shifted half a pixel to the left; the PrimaryRay tests report directions off by half a pixel.
 #include "whitted/labs.hpp"
 
 #include <cmath>

@@ -1,0 +1,82 @@
+// Mistake: intersect_triangle takes cross(p2 - p0, p1 - p0) as the outward normal, the opposite of the winding rule.
+// Symptom: flat colours look right, but front_face is reversed on every triangle, so glass triangles would refract the wrong way; the triangle tests report front_face.
+#include "whitted/labs.hpp"
+
+#include <cmath>
+
+namespace whitted {
+
+Ray primary_ray(const Camera& camera, double x, double y) {
+    // d = normalize(w (x / ResX - 1/2) xe + h (y / ResY - 1/2) ye - df ze)
+    const Vec3 d = camera.w * (x / camera.res_x - 0.5) * camera.xe +
+                   camera.h * (y / camera.res_y - 0.5) * camera.ye - camera.df * camera.ze;
+    return Ray{camera.eye, glm::normalize(d)};
+}
+
+std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range) {
+    // |o + t d - c|^2 = r^2 with |d| = 1:  t^2 + 2 b t + c = 0, b = (o - c) . d, c = |o - c|^2 - r^2.
+    const Vec3 oc = ray.origin - sphere.center;
+    const double b = glm::dot(oc, ray.direction);
+    const double c = glm::dot(oc, oc) - sphere.radius * sphere.radius;
+    // The discriminant b^2 - c, computed as r^2 - (distance from the centre to the ray)^2,
+    // which does not lose its digits when the sphere is small and far away.
+    const Vec3 to_line = oc - b * ray.direction;
+    const double discriminant = sphere.radius * sphere.radius - glm::dot(to_line, to_line);
+    if (discriminant < 0.0) return std::nullopt;
+    // Stable roots: q = -b - sign(b) sqrt(disc); t0 = q, t1 = c / q.
+    const double q = -b - std::copysign(std::sqrt(discriminant), b);
+    double t0 = q, t1 = (q != 0.0) ? c / q : 0.0;
+    if (t0 > t1) std::swap(t0, t1);
+    double t = t0;
+    if (!t_range.surrounds(t)) {
+        t = t1;
+        if (!t_range.surrounds(t)) return std::nullopt;
+    }
+    const Point3 p = ray.at(t);
+    Vec3 outward = (p - sphere.center) / sphere.radius;
+    if (sphere.inward) outward = -outward;
+    return make_hit(ray, t, outward);
+}
+
+std::optional<Hit> intersect_plane(const Ray& ray, const Plane& plane, Interval t_range) {
+    // n . (o + t d - p) = 0  =>  t = n . (p - o) / (n . d)
+    const double denominator = glm::dot(plane.normal, ray.direction);
+    if (denominator == 0.0) return std::nullopt; // parallel
+    const double t = glm::dot(plane.normal, plane.point - ray.origin) / denominator;
+    if (!t_range.surrounds(t)) return std::nullopt;
+    return make_hit(ray, t, plane.normal);
+}
+
+std::optional<Hit> intersect_triangle(const Ray& ray, const Triangle& triangle, Interval t_range) {
+    // Moller-Trumbore: solve o + t d = (1 - b1 - b2) p0 + b1 p1 + b2 p2 with Cramer's rule.
+    const Vec3 e1 = triangle.p1 - triangle.p0;
+    const Vec3 e2 = triangle.p2 - triangle.p0;
+    const Vec3 p = glm::cross(ray.direction, e2);
+    const double determinant = glm::dot(e1, p);
+    if (determinant == 0.0) return std::nullopt; // ray parallel to the triangle's plane
+    const double inverse = 1.0 / determinant;
+    const Vec3 s = ray.origin - triangle.p0;
+    const double b1 = glm::dot(s, p) * inverse;
+    if (b1 < 0.0 || b1 > 1.0) return std::nullopt;
+    const Vec3 q = glm::cross(s, e1);
+    const double b2 = glm::dot(ray.direction, q) * inverse;
+    if (b2 < 0.0 || b1 + b2 > 1.0) return std::nullopt;
+    const double t = glm::dot(e2, q) * inverse;
+    if (!t_range.surrounds(t)) return std::nullopt;
+    Hit hit = make_hit(ray, t, glm::normalize(glm::cross(e2, e1)));
+    hit.uv = Vec2(b1, b2);
+    return hit;
+}
+
+std::optional<Hit> closest_hit(const Ray& ray, std::span<const Primitive> primitives, Interval t_range) {
+    std::optional<Hit> closest;
+    for (const Primitive& primitive : primitives) {
+        if (auto hit = intersect(ray, primitive, t_range)) {
+            t_range.max = hit->t; // from now on only nearer hits count
+            closest = hit;
+        }
+    }
+    return closest;
+}
+
+} // namespace whitted

@@ -1,0 +1,27 @@
+// Mistake: blinn_phong skips the diffuse term of lights behind the surface but still adds their highlight.
+// Symptom: thin highlights appear on the unlit side of objects, near their silhouettes; the test of a light behind the surface finds a highlight.
+#include "whitted/labs.hpp"
+
+#include <cmath>
+
+namespace whitted {
+
+Color blinn_phong(const Tracer& tracer, const Hit& hit, const Vec3& wo) {
+    const Scene& scene = tracer.scene();
+    const Material& material = scene.material(hit);
+    const Color kd = material.diffuse * material.color_at(hit.point);
+    const Color ks = material.specular * material.specular_color;
+    // I = I_a kd + sum over lights of f_s (I_l kd (n . L) + I_l ks (h . n)^shininess)
+    Color color = scene.ambient() * kd;
+    for (const PointLight& light : scene.lights()) {
+        const Vec3 wi = glm::normalize(light.position - hit.point);
+        const double cos_theta = glm::dot(hit.normal, wi);
+        if (!is_lit(tracer, hit, light)) continue;
+        const Vec3 halfway = glm::normalize(wi + wo);
+        const double highlight = std::pow(glm::max(glm::dot(halfway, hit.normal), 0.0), material.shininess);
+        color += light.color * (kd * glm::max(cos_theta, 0.0) + ks * highlight);
+    }
+    return color;
+}
+
+} // namespace whitted

@@ -1,0 +1,28 @@
+// Mistake: blinn_phong checks the shadow feeler for the diffuse term only and adds the highlight even when the light is blocked.
+// Symptom: highlights shine out of shadows; the test with a blocker between the point and the light finds a highlight.
+#include "whitted/labs.hpp"
+
+#include <cmath>
+
+namespace whitted {
+
+Color blinn_phong(const Tracer& tracer, const Hit& hit, const Vec3& wo) {
+    const Scene& scene = tracer.scene();
+    const Material& material = scene.material(hit);
+    const Color kd = material.diffuse * material.color_at(hit.point);
+    const Color ks = material.specular * material.specular_color;
+    // I = I_a kd + sum over lights of f_s (I_l kd (n . L) + I_l ks (h . n)^shininess)
+    Color color = scene.ambient() * kd;
+    for (const PointLight& light : scene.lights()) {
+        const Vec3 wi = glm::normalize(light.position - hit.point);
+        const double cos_theta = glm::dot(hit.normal, wi);
+        if (cos_theta <= 0.0) continue;
+        const Vec3 halfway = glm::normalize(wi + wo);
+        const double highlight = std::pow(glm::max(glm::dot(halfway, hit.normal), 0.0), material.shininess);
+        if (is_lit(tracer, hit, light)) color += light.color * kd * cos_theta;
+        color += light.color * ks * highlight;
+    }
+    return color;
+}
+
+} // namespace whitted
