@@ -16,4 +16,7 @@ struct Command {
 /// `whitted render SCENE ...`
 Command add_render_command(CLI::App& app);
 
+/// `whitted diff A B [-o DIFF]`
+Command add_diff_command(CLI::App& app);
+
 } // namespace whitted

@@ -79,8 +79,9 @@ std::optional<int> choose_stage(const RenderOptions& options) {
     const int ready = highest_complete_stage(labs);
     if (options.stage) {
         if (*options.stage <= ready) return options.stage;
-        std::fprintf(stderr, "whitted: stage %d needs labs 1 to %d, and these are not done yet:\n%s", *options.stage,
-                     *options.stage, missing_labs(labs, *options.stage).c_str());
+        const std::string needed = *options.stage == 1 ? "lab 1" : "labs 1 to " + std::to_string(*options.stage);
+        std::fprintf(stderr, "whitted: stage %d needs %s, and these are not done yet:\n%s", *options.stage,
+                     needed.c_str(), missing_labs(labs, *options.stage).c_str());
         if (ready > 0) std::fprintf(stderr, "Finish them, or render an earlier stage with --stage %d.\n", ready);
         return std::nullopt;
     }

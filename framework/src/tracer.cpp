@@ -69,7 +69,7 @@ bool Tracer::within_budget() const {
 bool Tracer::occluded(const Ray& ray, double distance) const {
     if (!within_budget()) return true; // over budget: no more light is gathered for this pixel
     ++stats_.shadow;
-    return scene_.occluded(ray, Interval{0.0, distance});
+    return scene_.occluded(ray, Interval{0.0, distance * (1.0 - 1e-6)});
 }
 
 } // namespace whitted

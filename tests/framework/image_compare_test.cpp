@@ -28,7 +28,7 @@ TEST(ImageCompare, IdenticalImagesPassWithInfinitePsnr) {
 }
 
 TEST(ImageCompare, AFewPixelsOffPassButAreCounted) {
-    // 100 x 100 = 10,000 pixels; 0.5 % is 50. Ten fully wrong pixels: 0.1 % fail,
+    // 100 x 100 = 10,000 pixels; 2 % is 200. Ten fully wrong pixels: 0.1 % fail,
     // mean error 10 / 10,000 = 0.001 < 1/255.
     const Image a = gradient(100, 100);
     Image b = a;
@@ -38,12 +38,27 @@ TEST(ImageCompare, AFewPixelsOffPassButAreCounted) {
     EXPECT_TRUE(d.passed) << d.summary();
 }
 
-TEST(ImageCompare, OnePercentWrongPixelsFail) {
+TEST(ImageCompare, OnePercentFullyWrongPixelsFailOnTheMeanError) {
     const Image a = gradient(100, 100);
     Image b = a;
     for (int i = 0; i < 100; ++i) b.at(i, (i * 37) % 100) = Color(1.0, 0.0, 1.0);
     const ImageDifference d = compare_images(a, b);
     EXPECT_FALSE(d.passed) << d.summary();
+}
+
+TEST(ImageCompare, ThreePercentSlightlyOffPixelsFailOnTheFraction) {
+    // 300 of 10,000 pixels off by 6/255: 3 % > 2 % fail, while the mean error
+    // 0.03 x 6/255 = 0.18/255 stays below 1/255.
+    const Image a(100, 100, Color(0.5));
+    Image b = a;
+    for (int i = 0; i < 300; ++i) b.pixels[i * 33] = Color(0.5 + 6.0 / 255.0);
+    const ImageDifference d = compare_images(a, b);
+    EXPECT_EQ(d.failing_pixels, 300u);
+    EXPECT_FALSE(d.passed) << d.summary();
+    // 150 such pixels (1.5 %) pass.
+    Image c = a;
+    for (int i = 0; i < 150; ++i) c.pixels[i * 66] = Color(0.5 + 6.0 / 255.0);
+    EXPECT_TRUE(compare_images(a, c).passed);
 }
 
 TEST(ImageCompare, AUniformTwoStepShiftFailsOnTheMeanError) {

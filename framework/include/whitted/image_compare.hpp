@@ -5,6 +5,14 @@
 // by a lot. The gate therefore counts pixels whose 8-bit value is off by more
 // than a few steps, and also bounds the mean error. PSNR and the worst pixel
 // are reported to help, never used to decide.
+//
+// Calibration (scripts/calibrate-gate.sh): the reference was compared with
+// correct variants of itself on every lab scene, hidden scene and the classic
+// scene. -O0 and clang builds match bit for bit; a secondary-ray offset 100
+// times larger or smaller stays below 0.1 % failing pixels; an implementation
+// computing primary rays and spheres in float fails up to 0.59 % of the pixels
+// (paths that flip at grazing and total-internal-reflection boundaries) with a
+// mean error of at most 0.21/255. The gate sits a few times above: 2 % and 1/255.
 #pragma once
 
 #include "whitted/image.hpp"
@@ -17,7 +25,7 @@ namespace whitted {
 /// The thresholds of the image gate; errors are in 8-bit steps divided by 255.
 struct ImageGate {
     double pixel_tolerance = 4.0 / 255.0; // a pixel fails when its largest channel error exceeds this
-    double max_failing_fraction = 0.005;  // at most 0.5 % of the pixels may fail...
+    double max_failing_fraction = 0.02;   // at most 2 % of the pixels may fail...
     double max_mean_error = 1.0 / 255.0;  // ...and the mean error must stay below this
 };
 

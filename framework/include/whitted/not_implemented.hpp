@@ -7,7 +7,6 @@
 // The renderer, the tests and the grader all report that message as it is.
 #pragma once
 
-#include <source_location>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +18,8 @@ struct NotImplemented : std::logic_error {
 };
 
 /// Throws NotImplemented naming the calling function and its place in the file.
-[[noreturn]] void not_implemented(std::source_location where = std::source_location::current());
+/// (The builtins, unlike std::source_location, work with both g++ and clang 14.)
+[[noreturn]] void not_implemented(const char* file = __builtin_FILE(), int line = __builtin_LINE(),
+                                  const char* function = __builtin_FUNCTION());
 
 } // namespace whitted

@@ -60,6 +60,8 @@ class Tracer {
     Color trace_pixel(double x, double y) const;
 
     /// True when something lies along the shadow feeler `ray` with 0 < t < distance.
+    /// The range stops a hair (a millionth) short of `distance`, so that a surface
+    /// passing through the light itself (a lamp on a wall) does not shadow it.
     bool occluded(const Ray& ray, double distance) const;
 
   private:
