@@ -16,4 +16,7 @@ struct Command {
 /// `whitted render SCENE ...`
 Command add_render_command(CLI::App& app);
 
+/// `whitted grade SUBMISSION ...` (instructors)
+Command add_grade_command(CLI::App& app);
+
 } // namespace whitted
