@@ -123,6 +123,13 @@ TEST(Scoring, PrerequisitesSkipWithTheFirstFailureAsReason) {
     const RuleFailures failures = {{"01_ray_casting:unit", {{"Sphere.Hits", Status::crash}, {"Plane.Hits", Status::failed}}}};
     EXPECT_EQ(unmet_prerequisite(image, failures).value(),
               "needs every test of 01_ray_casting:unit to pass first; Sphere.Hits: crash (and 1 more)");
+    Rule integration = image;
+    integration.requires_rules = {"01_ray_casting:unit", "02_shadows:unit", "03_blinn_phong:unit"};
+    const RuleFailures several = {{"01_ray_casting:unit", {}},
+                                  {"02_shadows:unit", {{"SpawnRay.Grazing", Status::not_implemented}}},
+                                  {"03_blinn_phong:unit", {{"Shading.Highlight", Status::compile_error}}}};
+    EXPECT_EQ(unmet_prerequisite(integration, several).value(),
+              "needs every test of 02_shadows:unit, 03_blinn_phong:unit to pass first; SpawnRay.Grazing: not implemented");
 }
 
 TEST(Scoring, FailingImagesEarnPartialCreditOnTheRamp) {

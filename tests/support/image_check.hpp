@@ -8,7 +8,9 @@
 // With WHITTED_TEST_OUTPUT=<folder> in the environment (`whitted grade` sets
 // it for each test) the pictures go to that folder instead, pass or fail, with
 // image.json holding the gate's numbers; reference.png is copied there before
-// rendering, so it is there even when the render throws or crashes.
+// rendering, so it is there even when the render throws or crashes. With
+// WHITTED_REFERENCE_ONLY=1 as well, the test stops there (skipped): the grader
+// shows the reference picture of an image test it does not run.
 // With WHITTED_UPDATE_REFERENCES=1 in the environment the test writes the
 // reference instead (`make references`, instructors only: it must be run with
 // the reference solution linked).

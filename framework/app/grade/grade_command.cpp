@@ -48,12 +48,13 @@ bool inside(const fs::path& path, const fs::path& folder) {
     return end == folder.end();
 }
 
-// The output folder must be new, empty or an earlier output, and hold nothing the grader reads.
-void check_output_folder(const fs::path& out, const std::vector<fs::path>& precious) {
+// A folder the grader writes must be new, empty or written by it before
+// (it has `mark`), and hold nothing the grader reads.
+void check_folder(const fs::path& folder, const char* mark, const std::string& option, const std::vector<fs::path>& precious) {
     for (const fs::path& path : precious)
-        if (inside(path, out)) throw UsageError("the output folder " + out.string() + " holds " + path.string() + "; choose another --out");
-    if (fs::exists(out) && (!fs::is_directory(out) || (!fs::is_empty(out) && !fs::exists(out / kMarker))))
-        throw UsageError(out.string() + " exists and is not an earlier grading output; choose a new or empty --out");
+        if (inside(path, folder)) throw UsageError(folder.string() + " holds " + path.string() + "; choose another " + option);
+    if (fs::exists(folder) && (!fs::is_directory(folder) || (!fs::is_empty(folder) && !fs::exists(folder / mark))))
+        throw UsageError(folder.string() + " exists and is not the grader's; choose a new or empty " + option);
 }
 
 void write_file(const fs::path& file, const std::string& text) {
@@ -76,7 +77,7 @@ struct CacheLock {
 };
 
 void print_table(const GradingResult& result, const fs::path& out) {
-    std::printf("%-15s %17s  %s\n", "lab", "points", "tests");
+    std::printf("%-15s %7s / %-7s %s\n", "lab", "points", "max", "tests");
     for (const LabResult& lab : result.labs) std::printf("%s\n", lab_summary_line(lab).c_str());
     std::printf("%-15s %7s / %-7s\n", "total", format_points(result.score_cents).c_str(), format_points(result.max_cents).c_str());
     for (const LabResult& lab : result.labs)
@@ -94,10 +95,10 @@ int run_grade(const GradeOptions& options) {
     const fs::path submission = fs::weakly_canonical(fs::absolute(options.submission));
     setup.submission_labs = find_lab_folder(submission, labs);
     setup.out = fs::weakly_canonical(fs::absolute(options.out));
-    check_output_folder(setup.out, {submission, setup.submission_labs, setup.instructor_tree});
+    check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs, setup.instructor_tree});
     setup.build = options.build_cache.empty() ? setup.out / "build" : fs::weakly_canonical(fs::absolute(options.build_cache));
     if (!options.build_cache.empty()) {
-        check_output_folder(setup.build, {submission, setup.instructor_tree});
+        check_folder(setup.build, "CMakeCache.txt", "--build-cache", {submission, setup.submission_labs, setup.instructor_tree, setup.out});
         const fs::path source = configured_source(setup.build);
         if (!source.empty() && fs::weakly_canonical(source) != setup.instructor_tree)
             throw UsageError("the build cache " + setup.build.string() + " was configured from " + source.string());

@@ -39,69 +39,53 @@ public:
         LabResult result;
         result.lab = lab.lab;
         result.title = lab.title;
-        std::vector<std::optional<std::string>> unmet;
-        for (const Rule& rule : lab.rules) unmet.push_back(unmet_prerequisite(rule, finished_));
+        // Prerequisites in earlier labs are known now; those within this lab, once their rule has run.
         const bool missing = std::find(missing_.begin(), missing_.end(), lab.lab) != missing_.end();
-        const bool any_runs = !missing && std::any_of(unmet.begin(), unmet.end(), [](const auto& u) { return !u; });
-
-        // A status for the whole lab when its program cannot run.
-        std::optional<Status> lab_status;
-        std::string lab_message;
-        const TestProgram program{lab.lab, setup_.build / "tests" / ("grade_" + lab.lab), setup_.out / "tests" / lab.lab,
-                                  setup_.test_limits, paths_};
+        const bool any_runs = !missing && std::any_of(lab.rules.begin(), lab.rules.end(), [&](const Rule& rule) {
+                                  return !unmet_prerequisite(rule, finished_);
+                              });
+        LabRun run{program(lab.lab, "grade_"), {}, std::nullopt, {}};
         if (missing) {
-            lab_status = Status::missing;
-            lab_message = "the submission has no " + lab.lab + ".cpp";
+            run.lab_status = Status::missing;
+            run.lab_message = "the submission has no " + lab.lab + ".cpp";
         } else if (any_runs) {
-            setup_.progress("building " + lab.lab);
-            BuildStep built = is_lab(lab.lab) ? build_targets(folder_, {"student_" + lab.lab}) : BuildStep{true, {}};
-            if (built.ok) built = build_targets(folder_, {"grade_" + lab.lab});
-            if (!built.ok) {
-                lab_status = Status::compile_error;
-                result.compile_errors = first_compiler_errors(built.log, paths_);
-                lab_message = is_lab(lab.lab) ? "labs/" + lab.lab + ".cpp does not compile" : "the labs do not build together";
-            }
+            build_lab(lab.lab, run, result);
         }
-        std::vector<std::string> names;
-        if (any_runs && !lab_status) {
+        if (any_runs && !run.lab_status) {
             std::string problem;
-            names = list_tests(program, problem);
-            if (names.empty()) {
-                lab_status = Status::crash;
-                lab_message = "the test program did not start: " + split_lines(problem).front();
+            run.names = list_tests(run.program, problem);
+            if (run.names.empty()) {
+                run.lab_status = Status::crash;
+                run.lab_message = "the test program did not start: " + split_lines(problem).front();
             }
         }
-        if (names.empty()) names = names_from_reference(lab.lab);
+        if (!any_runs || run.lab_status) {
+            run.program = program(lab.lab, "list_");
+            run.names = names_from_reference(run.program);
+        }
 
-        const LabPlan plan = plan_lab(lab, names);
+        const LabPlan plan = plan_lab(lab, run.names);
         result.notes = plan.notes;
-        result.tests.resize(names.size());
+        result.tests.resize(run.names.size());
         auto grade_test = [&](std::size_t t, const std::optional<std::string>& reason) {
-            TestOutcome outcome;
-            outcome.lab = lab.lab;
-            outcome.name = names[t];
-            if (lab_status) {
-                outcome.status = *lab_status;
-                outcome.message = lab_message;
-            } else if (reason || !any_runs) {
-                outcome.status = Status::skipped;
-                outcome.message = "skipped: " + reason.value_or("no rule of this lab could run");
-            } else {
-                outcome = run_test(program, names[t]);
-            }
             const Rule* rule = plan.rule_of_test[t];
+            TestOutcome outcome = reason || !any_runs || run.lab_status ? not_run(lab.lab, run, t, reason) : run_test(run.program, run.names[t]);
+            if (rule && rule->image && outcome.status != Status::passed && outcome.pictures.empty() && !outcome.image)
+                outcome.pictures = fetch_reference_picture(run.program, run.names[t]);
             const long score = score_test(outcome, plan.max_cents[t], rule, setup_.rubric.image_ramp);
-            result.tests[t] = ScoredTest{std::move(outcome), rule ? rule->id : "", plan.max_cents[t], score};
+            const bool image = (rule && rule->image) || outcome.image || !outcome.pictures.empty();
+            result.tests[t] = ScoredTest{std::move(outcome), rule ? rule->id : "", plan.max_cents[t], score, image};
         };
         for (std::size_t r = 0; r < lab.rules.size(); ++r) {
+            const std::optional<std::string> unmet = unmet_prerequisite(lab.rules[r], finished_);
             std::vector<Failure>& failures = finished_[lab.lab + ":" + lab.rules[r].id];
-            for (std::size_t t = 0; t < names.size(); ++t) {
+            for (std::size_t t = 0; t < run.names.size(); ++t) {
                 if (plan.rule_of_test[t] != &lab.rules[r]) continue;
-                grade_test(t, unmet[r]);
-                if (result.tests[t].outcome.status != Status::passed) failures.push_back({names[t], result.tests[t].outcome.status});
+                grade_test(t, unmet);
+                if (result.tests[t].outcome.status != Status::passed) failures.push_back({run.names[t], result.tests[t].outcome.status});
             }
         }
-        for (std::size_t t = 0; t < names.size(); ++t)
+        for (std::size_t t = 0; t < run.names.size(); ++t)
             if (!plan.rule_of_test[t]) grade_test(t, std::nullopt);
         for (const ScoredTest& test : result.tests) {
             result.score_cents += test.score_cents;
@@ -112,14 +96,47 @@ public:
     }
 
 private:
-    // The lab's test names from its tests linked with the reference alone, for a lab whose own program cannot list them.
-    std::vector<std::string> names_from_reference(const std::string& lab) {
-        const BuildStep built = build_targets(folder_, {"list_" + lab});
-        if (!built.ok) throw GraderFailure("building list_" + lab + " failed:\n" + first_compiler_errors(built.log, paths_));
+    // How one lab's tests are run: by which program, which tests, or why none of them runs.
+    struct LabRun {
+        TestProgram program;
+        std::vector<std::string> names;
+        std::optional<Status> lab_status; // when the lab's program cannot run at all
+        std::string lab_message;
+    };
+
+    TestProgram program(const std::string& lab, const std::string& prefix) const {
+        return {lab, setup_.build / "tests" / (prefix + lab), setup_.out / "tests" / lab, setup_.test_limits, paths_};
+    }
+
+    // Builds the student's lab file alone first, so that its errors are the ones shown.
+    void build_lab(const std::string& lab, LabRun& run, LabResult& result) {
+        setup_.progress("building " + lab);
+        BuildStep built = is_lab(lab) ? build_targets(folder_, {"student_" + lab}) : BuildStep{true, {}};
+        if (built.ok) built = build_targets(folder_, {"grade_" + lab});
+        if (built.ok) return;
+        run.lab_status = Status::compile_error;
+        run.lab_message = is_lab(lab) ? "labs/" + lab + ".cpp does not compile" : "the labs do not build together";
+        result.compile_errors = first_compiler_errors(built.log, paths_);
+    }
+
+    // The outcome of a test that is not run.
+    static TestOutcome not_run(const std::string& lab, const LabRun& run, std::size_t t, const std::optional<std::string>& reason) {
+        TestOutcome outcome;
+        outcome.lab = lab;
+        outcome.name = run.names[t];
+        outcome.status = run.lab_status.value_or(Status::skipped);
+        outcome.message = run.lab_status ? run.lab_message : reason.value_or("no rule of this lab could run");
+        return outcome;
+    }
+
+    // The test names from the lab's tests linked with the reference alone (list_<lab>), for a lab whose own program cannot list them.
+    std::vector<std::string> names_from_reference(const TestProgram& lister) {
+        const std::string target = lister.program.filename().string();
+        const BuildStep built = build_targets(folder_, {target});
+        if (!built.ok) throw GraderFailure("building " + target + " failed:\n" + first_compiler_errors(built.log, paths_));
         std::string problem;
-        const TestProgram lister{lab, setup_.build / "tests" / ("list_" + lab), setup_.out / "tests" / lab, setup_.test_limits, paths_};
         std::vector<std::string> names = list_tests(lister, problem);
-        if (!problem.empty()) throw GraderFailure("the reference tests of " + lab + " do not list: " + problem);
+        if (!problem.empty()) throw GraderFailure("the reference tests do not list: " + problem);
         return names;
     }
 

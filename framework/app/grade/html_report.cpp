@@ -76,9 +76,10 @@ std::string heat_legend() {
     return html + "</p>\n";
 }
 
-std::string test_card(const LabResult& lab, const ScoredTest& test) {
+// One test; its id is the test's number in results.json ("test-2.5").
+std::string test_card(const LabResult& lab, const ScoredTest& test, const std::string& number) {
     const TestOutcome& o = test.outcome;
-    std::string html = "<div class=\"test\"><span class=\"points\">" + format_points(test.score_cents) + " / " +
+    std::string html = "<div class=\"test\" id=\"test-" + number + "\"><span class=\"points\">" + format_points(test.score_cents) + " / " +
                        format_points(test.max_cents) + "</span><span class=\"badge " + std::string(status_name(o.status)) +
                        "\">" + std::string(status_label(o.status)) + "</span><b>" + escape(o.name) + "</b> &middot; " +
                        escape(lab.title) + (is_hidden(o.name) ? " &middot; <i>hidden test</i>" : "") + "\n";
@@ -118,9 +119,12 @@ std::string html_report(const GradingResult& result, const std::string& problem)
 
     html += "<h2>Tests that did not pass</h2>\n" + heat_legend();
     std::string passed;
-    for (const LabResult& lab : result.labs)
-        for (const ScoredTest& test : lab.tests)
-            (test.outcome.status == Status::passed ? passed : html) += test_card(lab, test);
+    for (std::size_t l = 0; l < result.labs.size(); ++l)
+        for (std::size_t t = 0; t < result.labs[l].tests.size(); ++t) {
+            const ScoredTest& test = result.labs[l].tests[t];
+            (test.outcome.status == Status::passed ? passed : html) +=
+                test_card(result.labs[l], test, std::to_string(l + 1) + "." + std::to_string(t + 1));
+        }
     return html + "<h2>Tests that passed</h2>\n" + passed + "</body></html>\n";
 }
 

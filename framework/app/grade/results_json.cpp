@@ -75,7 +75,7 @@ std::string results_json(const GradingResult& result, const std::string& problem
             entry["output_format"] = "text";
             entry["tags"] = {lab.lab, test.rule.empty() ? "unscored" : test.rule, std::string(status_name(o.status))};
             entry["visibility"] = is_hidden(o.name) ? "hidden" : "visible";
-            entry["extra_data"] = {{"lab", lab.lab}, {"status", std::string(status_name(o.status))}};
+            entry["extra_data"] = {{"lab", lab.lab}, {"status", std::string(status_name(o.status))}, {"image", test.image_test}};
             if (!lab.compile_errors.empty() && o.status == Status::compile_error) entry["output"] = test_output(test) + "\n" + lab.compile_errors;
             root["tests"].push_back(entry);
         }

@@ -85,16 +85,19 @@ LabPlan plan_lab(const LabRubric& lab, const std::vector<std::string>& tests) {
 }
 
 std::optional<std::string> unmet_prerequisite(const Rule& rule, const RuleFailures& finished) {
+    std::string unmet;
+    const std::vector<Failure>* first = nullptr;
     for (const std::string& required : rule.requires_rules) {
         const auto found = finished.find(required);
         if (found == finished.end() || found->second.empty()) continue;
-        const std::vector<Failure>& failures = found->second;
-        std::string reason = "needs every test of " + required + " to pass first; " + failures.front().name + ": " +
-                             std::string(status_label(failures.front().status));
-        if (failures.size() > 1) reason += " (and " + std::to_string(failures.size() - 1) + " more)";
-        return reason;
+        unmet += (unmet.empty() ? "" : ", ") + required;
+        if (!first) first = &found->second;
     }
-    return std::nullopt;
+    if (!first) return std::nullopt;
+    std::string reason = "needs every test of " + unmet + " to pass first; " + first->front().name + ": " +
+                         std::string(status_label(first->front().status));
+    if (first->size() > 1) reason += " (and " + std::to_string(first->size() - 1) + " more)";
+    return reason;
 }
 
 long score_test(const TestOutcome& outcome, long max_cents, const Rule* rule, const ImageRamp& default_ramp) {

@@ -36,6 +36,7 @@ struct ScoredTest {
     std::string rule; // the rubric rule's id; empty when no rule matched
     long max_cents = 0;
     long score_cents = 0;
+    bool image_test = false; // its rule compares images, or it wrote image numbers
 };
 
 /// Why the rule's tests must be skipped, or nothing when every prerequisite passed.

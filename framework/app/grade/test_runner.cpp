@@ -175,6 +175,17 @@ TestOutcome run_test(const TestProgram& program, const std::string& test_name) {
     return outcome;
 }
 
+std::filesystem::path fetch_reference_picture(const TestProgram& program, const std::string& test_name) {
+    const std::filesystem::path folder = program.output / folder_name(test_name);
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    run_process({{program.program.string(), "--gtest_filter=" + test_name},
+                 folder,
+                 {{"WHITTED_TEST_OUTPUT", folder.string()}, {"WHITTED_REFERENCE_ONLY", "1"}},
+                 program.limits});
+    return std::filesystem::exists(folder / "reference.png") ? folder : std::filesystem::path();
+}
+
 std::optional<ImageNumbers> read_image_numbers(const std::filesystem::path& file) {
     const std::optional<json> value = read_json(file);
     if (!value || !value->is_object()) return std::nullopt;

@@ -28,6 +28,10 @@ std::vector<std::string> list_tests(const TestProgram& program, std::string& pro
 /// Runs one test in its own process group under the program's limits.
 TestOutcome run_test(const TestProgram& program, const std::string& test_name);
 
+/// Asks an image test for its reference picture only (it does not render);
+/// returns the folder holding reference.png, or empty.
+std::filesystem::path fetch_reference_picture(const TestProgram& program, const std::string& test_name);
+
 /// The folder name for a test: its name with '/' (parameterised tests) as '_'.
 std::string folder_name(const std::string& test_name);
 
