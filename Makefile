@@ -1,6 +1,7 @@
 # The two commands of the README, and a few more.
 #   make render   install missing packages, build (Release), render the classic scene
 #   make test     the same set-up, then every test through CTest
+#   make test-grader  end-to-end check of `whitted grade` (CI, after make test)
 MAKEFLAGS += --no-print-directory
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
@@ -8,7 +9,7 @@ SCENE ?= scenes/whitted_1980.p3f
 OUT ?= whitted_1980.png
 SIZE ?= 512
 
-.PHONY: all deps configure build render test references clean
+.PHONY: all deps configure build render test test-grader references clean
 
 all: build
 
@@ -26,6 +27,9 @@ render: build
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
+
+test-grader: build
+	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-grader.sh
 
 # Instructors: rewrite every reference picture from the reference solution.
 references: build

@@ -63,6 +63,7 @@ TEST_F(TestRunnerTest, MessagesSayWhatHappened) {
     EXPECT_EQ(run_test(program, "Fake.Segfaults").message.rfind("killed by SIGSEGV", 0), 0u);
     EXPECT_EQ(run_test(program, "Fake.Loops").message, "did not finish within 1 s and was killed");
     const TestOutcome wrong = run_test(program, "Fake.GivesAWrongAnswer");
+    EXPECT_EQ(wrong.message, "Expected equality of these values:");
     EXPECT_NE(wrong.output.find("arithmetic is broken"), std::string::npos) << wrong.output;
     EXPECT_EQ(wrong.output.find(" ms)"), std::string::npos) << "no durations: " << wrong.output;
 }

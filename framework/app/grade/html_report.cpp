@@ -90,7 +90,7 @@ std::string test_card(const LabResult& lab, const ScoredTest& test, const std::s
                 figure(o.pictures / "diff.png", "difference &times;16") + figure(o.pictures / "heat.png", "heat map") + "</div>\n";
     }
     if (o.status == Status::compile_error && !lab.compile_errors.empty())
-        html += "<pre>" + escape(lab.compile_errors) + "</pre>\n";
+        html += "<p>The compiler's errors are above, under &ldquo;" + escape(lab.title) + " does not compile&rdquo;.</p>\n";
     else if (o.status != Status::passed && !o.output.empty())
         html += "<pre>" + escape(o.output) + "</pre>\n";
     return html + "</div>\n";
@@ -112,7 +112,7 @@ std::string html_report(const GradingResult& result, const std::string& problem)
     std::string notes;
     for (const LabResult& lab : result.labs)
         for (const std::string& note : lab.notes) notes += "<li>" + escape(lab.lab + ": " + note) + "</li>\n";
-    if (!notes.empty()) html += "<h2>Rubric notes</h2><ul>\n" + notes + "</ul>\n";
+    if (!notes.empty()) html += "<details><summary>Rubric notes (for instructors)</summary><ul>\n" + notes + "</ul></details>\n";
     for (const LabResult& lab : result.labs)
         if (!lab.compile_errors.empty())
             html += "<h2>" + escape(lab.title) + " does not compile</h2><pre>" + escape(lab.compile_errors) + "</pre>\n";

@@ -85,9 +85,16 @@ void classify_failures(TestOutcome& outcome, const std::vector<std::string>& fai
             outcome.message = "exception: " + split_lines(*exception).front();
         }
     }
-    if (outcome.status == Status::failed && !failures.empty()) {
-        const std::vector<std::string> lines = split_lines(failures.front());
-        outcome.message = lines.size() > 1 ? lines[1] : "an assertion failed";
+    if (outcome.status == Status::failed) {
+        // The first line that says something: not GoogleTest's "file:line" or a bare "Failed".
+        static const std::regex location(R"(^\S+:\d+$|^Failed$|^Failure$|^\s*$)");
+        outcome.message = "an assertion failed";
+        for (const std::string& failure : failures)
+            for (const std::string& line : split_lines(failure))
+                if (!std::regex_match(line, location)) {
+                    outcome.message = line;
+                    return;
+                }
     }
 }
 
