@@ -1,7 +1,7 @@
 // The grader's pictures: the heat map's fixed scale and the gate numbers file.
 #include "image_pictures.hpp"
 
-#include "grade/test_runner.hpp"
+#include "grade/test_report.hpp"
 
 #include <gtest/gtest.h>
 

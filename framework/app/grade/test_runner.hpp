@@ -6,7 +6,6 @@
 #include "grade/process_runner.hpp"
 
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,8 +33,5 @@ std::filesystem::path fetch_reference_picture(const TestProgram& program, const 
 
 /// The folder name for a test: its name with '/' (parameterised tests) as '_'.
 std::string folder_name(const std::string& test_name);
-
-/// Reads tests/support's image.json; empty if the file is missing or unreadable.
-std::optional<ImageNumbers> read_image_numbers(const std::filesystem::path& file);
 
 } // namespace whitted::grade
