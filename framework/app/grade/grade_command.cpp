@@ -10,6 +10,7 @@
 #include "grade/submission.hpp"
 #include "grade/text.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fcntl.h>
