@@ -2,6 +2,7 @@
 #   make render   install missing packages, build (Release), render the classic scene
 #   make test     the same set-up, then every test through CTest
 #   make handout OUT=dir, make proofs, make references: for instructors
+#   make test-grader  end-to-end check of `whitted grade` (CI, after make test)
 MAKEFLAGS += --no-print-directory
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
@@ -9,7 +10,7 @@ SCENE ?= scenes/whitted_1980.p3f
 OUT ?= whitted_1980.png
 SIZE ?= 512
 
-.PHONY: all deps configure build render test references handout proofs clean
+.PHONY: all deps configure build render test test-grader references handout proofs clean
 
 all: build
 
@@ -33,6 +34,9 @@ ifneq ($(wildcard solution/01_ray_casting.cpp),)
 else
 	@bash scripts/lab-progress.sh $(BUILD_DIR)
 endif
+
+test-grader: build
+	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-grader.sh
 
 # Instructors: rewrite every reference picture from the reference solution.
 references: build

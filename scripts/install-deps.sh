@@ -4,10 +4,10 @@
 # prints the exact command to run and stops with an error.
 set -euo pipefail
 
-packages=(g++ make cmake pkg-config libglm-dev libgtest-dev libstb-dev libcli11-dev)
+packages=(g++ make cmake pkg-config libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
-    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11)" >&2
+    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json)" >&2
     exit 0
 fi
 

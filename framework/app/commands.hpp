@@ -19,4 +19,7 @@ Command add_render_command(CLI::App& app);
 /// `whitted diff A B [-o DIFF]`
 Command add_diff_command(CLI::App& app);
 
+/// `whitted grade SUBMISSION ...` (instructors)
+Command add_grade_command(CLI::App& app);
+
 } // namespace whitted

@@ -1,4 +1,5 @@
 #include "image_check.hpp"
+#include "image_pictures.hpp"
 
 #include "whitted/image_compare.hpp"
 #include "whitted/render.hpp"
@@ -8,6 +9,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 namespace whitted::testing_helpers {
 namespace {
@@ -23,18 +25,38 @@ std::filesystem::path output_folder() {
     return std::filesystem::path(WHITTED_BINARY_DIR) / "test-output" / name;
 }
 
-Image difference_picture(const Image& a, const Image& b) {
-    Image diff(a.width, a.height);
-    for (std::size_t i = 0; i < diff.pixels.size(); ++i) {
-        const Color d = glm::abs(a.pixels[i] - b.pixels[i]) * 16.0;
-        diff.pixels[i] = is_finite(d) ? d : Color(1.0, 0.0, 1.0);
+// The folder named by WHITTED_TEST_OUTPUT (set by `whitted grade`), if any.
+std::optional<std::filesystem::path> grader_folder() {
+    const char* folder = std::getenv("WHITTED_TEST_OUTPUT");
+    if (!folder || !*folder) return std::nullopt;
+    return std::filesystem::path(folder);
+}
+
+// yours.png, reference.png and (for images of one size) diff.png and heat.png.
+void write_pictures(const Image& rendered, const Image& reference, const std::filesystem::path& folder) {
+    std::filesystem::create_directories(folder);
+    const Image shown = with_broken_pixels_marked(rendered);
+    write_image(shown, folder / "yours.png");
+    write_image(reference, folder / "reference.png");
+    if (rendered.width == reference.width && rendered.height == reference.height) {
+        write_image(difference_picture(shown, reference), folder / "diff.png");
+        write_image(heat_picture(reference, rendered), folder / "heat.png");
     }
-    return diff;
 }
 
 } // namespace
 
 void expect_matches_reference(const ImageCheck& check) {
+    // The grader shows the reference even when the render below throws or crashes.
+    const std::optional<std::filesystem::path> graded = grader_folder();
+    const std::filesystem::path reference_file = source_path(check.reference);
+    if (graded && std::filesystem::is_regular_file(reference_file)) {
+        std::filesystem::create_directories(*graded);
+        std::filesystem::copy_file(reference_file, *graded / "reference.png",
+                                   std::filesystem::copy_options::overwrite_existing);
+        if (const char* only = std::getenv("WHITTED_REFERENCE_ONLY"); only && std::string(only) == "1")
+            GTEST_SKIP() << "only the reference picture was asked for";
+    }
     LoadedScene loaded = load_scene(source_path(check.scene));
     loaded.data.camera = loaded.data.camera.with_resolution(check.width, check.height);
     RenderSettings settings;
@@ -43,7 +65,6 @@ void expect_matches_reference(const ImageCheck& check) {
     const Scene scene(std::move(loaded.data));
     Image rendered = render(scene, settings, 2).image;
 
-    const std::filesystem::path reference_file = source_path(check.reference);
     if (const char* update = std::getenv("WHITTED_UPDATE_REFERENCES"); update && std::string(update) == "1") {
         std::filesystem::create_directories(reference_file.parent_path());
         write_image(rendered, reference_file);
@@ -51,20 +72,19 @@ void expect_matches_reference(const ImageCheck& check) {
     }
     const Image reference = read_image(reference_file);
     const ImageDifference difference = compare_images(reference, rendered);
+    // For the grader: the pictures and the numbers, pass or fail.
+    if (graded) {
+        write_pictures(rendered, reference, *graded);
+        write_gate_numbers(difference, check.scene, check.stage, *graded / "image.json");
+    }
     if (difference.passed) return;
 
-    const std::filesystem::path folder = output_folder();
-    std::filesystem::create_directories(folder);
+    const std::filesystem::path folder = graded.value_or(output_folder());
+    if (!graded) write_pictures(rendered, reference, folder);
     const std::size_t broken = count_non_finite(rendered);
-    Image shown = rendered;
-    for (Color& c : shown.pixels)
-        if (!is_finite(c)) c = Color(1.0, 0.0, 1.0); // NaN and infinity show as magenta
-    write_image(shown, folder / "yours.png");
-    write_image(reference, folder / "reference.png");
-    if (difference.same_size) write_image(difference_picture(shown, reference), folder / "diff.png");
     ADD_FAILURE() << check.scene << " at stage " << check.stage << " differs from " << check.reference << ": "
                   << difference.summary() << (broken ? " (NaN or infinite pixels are magenta)" : "")
-                  << "\n  pictures: " << folder.string() << "/{yours,reference,diff}.png";
+                  << "\n  pictures: " << folder.string() << "/{yours,reference,diff,heat}.png";
 }
 
 } // namespace whitted::testing_helpers

@@ -1,9 +1,16 @@
 // Image tests: render a scene with the linked labs and compare it with a
 // committed reference picture through the image gate (image_compare.hpp).
 //
-// On failure the test writes three pictures next to each other in
-// <build>/test-output/<test name>/: yours.png, reference.png and diff.png (the
-// absolute difference, 16 times brighter), and says where they are.
+// On failure the test writes four pictures next to each other in
+// <build>/test-output/<test name>/: yours.png, reference.png, diff.png (the
+// absolute difference, 16 times brighter) and heat.png (the error on a fixed
+// colour scale, image_pictures.hpp), and says where they are.
+// With WHITTED_TEST_OUTPUT=<folder> in the environment (`whitted grade` sets
+// it for each test) the pictures go to that folder instead, pass or fail, with
+// image.json holding the gate's numbers; reference.png is copied there before
+// rendering, so it is there even when the render throws or crashes. With
+// WHITTED_REFERENCE_ONLY=1 as well, the test stops there (skipped): the grader
+// shows the reference picture of an image test it does not run.
 // With WHITTED_UPDATE_REFERENCES=1 in the environment the test writes the
 // reference instead (`make references`, instructors only: it must be run with
 // the reference solution linked).

@@ -1,0 +1,174 @@
+// `whitted grade SUBMISSION`: build a student's labs against the instructor
+// tree and grade them with the rubric; writes results.json (Gradescope) and
+// report.html. Exit codes: 0 full marks, 1 points lost, 2 usage error,
+// 3 grader failure (the instructor tree does not build, the rubric is wrong).
+#include "commands.hpp"
+#include "grade/builder.hpp"
+#include "grade/grading.hpp"
+#include "grade/html_report.hpp"
+#include "grade/results_json.hpp"
+#include "grade/submission.hpp"
+#include "grade/text.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fcntl.h>
+#include <fstream>
+#include <memory>
+#include <sys/file.h>
+#include <unistd.h>
+
+namespace whitted {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace grade;
+
+struct GradeOptions {
+    std::string submission;
+    std::string out = "grading";
+    std::string instructor_tree = WHITTED_INSTRUCTOR_TREE;
+    std::string build_cache;
+    std::string rubric;
+    int jobs = 2;
+    double timeout = 20.0;
+    int memory_mb = 2048;
+    long max_processes = 0;
+    bool quiet = false;
+};
+
+const char* kMarker = ".whitted-grade"; // marks a folder the grader may empty again
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+bool inside(const fs::path& path, const fs::path& folder) {
+    const auto [end, ignored] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
+    return end == folder.end();
+}
+
+// A folder the grader writes must be new, empty or written by it before
+// (it has `mark`), and hold nothing the grader reads.
+void check_folder(const fs::path& folder, const char* mark, const std::string& option, const std::vector<fs::path>& precious) {
+    for (const fs::path& path : precious)
+        if (inside(path, folder)) throw UsageError(folder.string() + " holds " + path.string() + "; choose another " + option);
+    if (fs::exists(folder) && (!fs::is_directory(folder) || (!fs::is_empty(folder) && !fs::exists(folder / mark))))
+        throw UsageError(folder.string() + " exists and is not the grader's; choose a new or empty " + option);
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+    std::ofstream stream(file, std::ios::binary);
+    stream << text;
+    if (!stream.flush()) throw GraderFailure("cannot write " + file.string());
+}
+
+// Holds an exclusive lock on a build cache, so two graders never build in it at once.
+struct CacheLock {
+    int fd = -1;
+    explicit CacheLock(const fs::path& folder) {
+        fs::create_directories(folder);
+        fd = open((folder / ".whitted-grade.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd >= 0) flock(fd, LOCK_EX);
+    }
+    ~CacheLock() {
+        if (fd >= 0) close(fd);
+    }
+};
+
+void print_table(const GradingResult& result, const fs::path& out) {
+    std::printf("%-15s %7s / %-7s %s\n", "lab", "points", "max", "tests");
+    for (const LabResult& lab : result.labs) std::printf("%s\n", lab_summary_line(lab).c_str());
+    std::printf("%-15s %7s / %-7s\n", "total", format_points(result.score_cents).c_str(), format_points(result.max_cents).c_str());
+    for (const LabResult& lab : result.labs)
+        for (const std::string& note : lab.notes) std::printf("note: %s: %s\n", lab.lab.c_str(), note.c_str());
+    std::printf("wrote %s and %s\n", (out / "results.json").c_str(), (out / "report.html").c_str());
+}
+
+int run_grade(const GradeOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    GradingSetup setup;
+    setup.instructor_tree = fs::weakly_canonical(fs::absolute(options.instructor_tree));
+    if (!fs::is_regular_file(setup.instructor_tree / "CMakeLists.txt") || !fs::is_directory(setup.instructor_tree / "solution"))
+        throw UsageError(setup.instructor_tree.string() + " is not an instructor tree (no CMakeLists.txt or solution/)");
+    const std::vector<std::string> labs = lab_names(setup.instructor_tree);
+    const fs::path submission = fs::weakly_canonical(fs::absolute(options.submission));
+    setup.submission_labs = find_lab_folder(submission, labs);
+    setup.out = fs::weakly_canonical(fs::absolute(options.out));
+    check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs, setup.instructor_tree});
+    setup.build = options.build_cache.empty() ? setup.out / "build" : fs::weakly_canonical(fs::absolute(options.build_cache));
+    if (!options.build_cache.empty()) {
+        check_folder(setup.build, "CMakeCache.txt", "--build-cache", {submission, setup.submission_labs, setup.instructor_tree, setup.out});
+        const fs::path source = configured_source(setup.build);
+        if (!source.empty() && fs::weakly_canonical(source) != setup.instructor_tree)
+            throw UsageError("the build cache " + setup.build.string() + " was configured from " + source.string());
+    }
+    fs::create_directories(setup.out);
+    write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/, tests/ and build/ here\n");
+    if (options.build_cache.empty()) fs::remove_all(setup.build);
+    setup.test_limits.wall_seconds = options.timeout;
+    setup.test_limits.cpu_seconds = 2 * options.timeout; // the image tests render with two threads
+    setup.test_limits.address_space = static_cast<std::size_t>(options.memory_mb) << 20;
+    setup.test_limits.file_size = 64 << 20;
+    setup.test_limits.processes = options.max_processes;
+    setup.jobs = options.jobs;
+    if (!options.quiet) setup.progress = [](const std::string& line) { std::fprintf(stderr, "grade: %s\n", line.c_str()); };
+
+    GradingResult result;
+    std::string problem;
+    int code = 0;
+    try {
+        std::vector<std::string> known = labs;
+        known.push_back("integration");
+        setup.rubric = load_rubric(options.rubric.empty() ? setup.instructor_tree / "tests" / "rubric.json" : fs::path(options.rubric), known);
+        std::unique_ptr<CacheLock> lock;
+        if (!options.build_cache.empty()) lock = std::make_unique<CacheLock>(setup.build);
+        result = grade_submission(setup);
+        code = result.max_cents > 0 && result.score_cents == result.max_cents ? 0 : 1;
+    } catch (const std::exception& error) { // RubricError, GraderFailure, file system errors
+        problem = replace_paths(error.what(), shown_paths(setup));
+        code = 3;
+    }
+    write_file(setup.out / "results.json", results_json(result, problem));
+    write_file(setup.out / "report.html", html_report(result, problem));
+    if (!problem.empty()) std::fprintf(stderr, "whitted grade: grader failure: %s\n", problem.c_str());
+    print_table(result, setup.out);
+    if (!options.quiet)
+        std::fprintf(stderr, "grade: done in %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return code;
+}
+
+} // namespace
+
+Command add_grade_command(CLI::App& app) {
+    auto options = std::make_shared<GradeOptions>();
+    CLI::App* command = app.add_subcommand("grade", "Grade a student's labs against the instructor tree (instructors).");
+    command->footer("Exit code: 0 full marks, 1 points lost, 2 usage error, 3 grader failure.");
+    command->add_option("submission", options->submission, "A student tree, its labs/ folder, or a folder with the NN_*.cpp lab files")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    command->add_option("--out", options->out, "Folder for results.json, report.html and the build (default ./grading)");
+    command->add_option("--instructor-tree", options->instructor_tree, "The tree with solution/ and the tests (default: the one whitted was built from)")
+        ->check(CLI::ExistingDirectory);
+    command->add_option("--build-cache", options->build_cache, "Reuse this build folder between submissions: only the student's files recompile");
+    command->add_option("--rubric", options->rubric, "Rubric file (default: <instructor tree>/tests/rubric.json)")->check(CLI::ExistingFile);
+    command->add_option("-j,--jobs", options->jobs, "Parallel compile jobs (default 2)")->check(CLI::Range(1, 64));
+    command->add_option("--timeout", options->timeout, "Wall-clock seconds per test; CPU time may be twice that (default 20)")
+        ->check(CLI::Range(0.5, 3600.0));
+    command->add_option("--memory", options->memory_mb, "Address space per test in MiB (default 2048)")->check(CLI::Range(64, 1 << 20));
+    command->add_option("--max-processes", options->max_processes,
+                        "RLIMIT_NPROC per test: the user's processes and threads in all (default: no limit; root is never limited)")
+        ->check(CLI::Range(0L, 1L << 20));
+    command->add_flag("-q,--quiet", options->quiet, "Print only the table");
+    return Command{command, [options] {
+                       try {
+                           return run_grade(*options);
+                       } catch (const UsageError& error) {
+                           std::fprintf(stderr, "whitted grade: %s\n", error.what());
+                           return 2;
+                       }
+                   }};
+}
+
+} // namespace whitted

@@ -1,0 +1,178 @@
+#include "grade/grading.hpp"
+#include "grade/builder.hpp"
+#include "grade/submission.hpp"
+#include "grade/test_runner.hpp"
+#include "grade/text.hpp"
+
+#include <algorithm>
+#include <optional>
+
+namespace whitted::grade {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool is_lab(const std::string& name) { return name != "integration"; }
+
+class LabGrader {
+public:
+    LabGrader(const GradingSetup& setup, const std::vector<std::string>& missing)
+        : setup_(setup), missing_(missing), folder_{setup.instructor_tree, setup.build, setup.out / "labs", setup.jobs},
+          paths_(shown_paths(setup)) {}
+
+    void build_shared_parts() {
+        setup_.progress("configuring " + setup_.build.string());
+        const BuildStep configured = configure(folder_);
+        if (!configured.ok) throw GraderFailure("configuring the instructor tree failed:\n" + trim_text(configured.log, 40));
+        std::vector<std::string> targets = {"test_support"};
+        for (const LabRubric& lab : setup_.rubric.labs) {
+            if (!is_lab(lab.lab)) continue;
+            targets.push_back("reference_" + lab.lab);
+            targets.push_back("labtests_" + lab.lab);
+        }
+        setup_.progress("building the framework, the reference and the tests");
+        const BuildStep built = build_targets(folder_, targets);
+        if (!built.ok) throw GraderFailure("building the instructor tree failed:\n" + first_compiler_errors(built.log, paths_));
+    }
+
+    LabResult grade(const LabRubric& lab) {
+        LabResult result;
+        result.lab = lab.lab;
+        result.title = lab.title;
+        // Prerequisites in earlier labs are known now; those within this lab, once their rule has run.
+        const bool missing = std::find(missing_.begin(), missing_.end(), lab.lab) != missing_.end();
+        const bool any_runs = !missing && std::any_of(lab.rules.begin(), lab.rules.end(), [&](const Rule& rule) {
+                                  return !unmet_prerequisite(rule, finished_);
+                              });
+        LabRun run{program(lab.lab, "grade_"), {}, std::nullopt, {}};
+        if (missing) {
+            run.lab_status = Status::missing;
+            run.lab_message = "the submission has no " + lab.lab + ".cpp";
+        } else if (any_runs) {
+            build_lab(lab.lab, run, result);
+        }
+        if (any_runs && !run.lab_status) {
+            std::string problem;
+            run.names = list_tests(run.program, problem);
+            if (run.names.empty()) {
+                run.lab_status = Status::crash;
+                run.lab_message = "the test program did not start: " + split_lines(problem).front();
+            }
+        }
+        if (!any_runs || run.lab_status) {
+            run.program = program(lab.lab, "list_");
+            run.names = names_from_reference(run.program);
+        }
+
+        const LabPlan plan = plan_lab(lab, run.names);
+        result.notes = plan.notes;
+        result.tests.resize(run.names.size());
+        auto grade_test = [&](std::size_t t, const std::optional<std::string>& reason) {
+            const Rule* rule = plan.rule_of_test[t];
+            TestOutcome outcome = reason || !any_runs || run.lab_status ? not_run(lab.lab, run, t, reason) : run_test(run.program, run.names[t]);
+            if (rule && rule->image && outcome.status != Status::passed && outcome.pictures.empty() && !outcome.image)
+                outcome.pictures = fetch_reference_picture(run.program, run.names[t]);
+            const long score = score_test(outcome, plan.max_cents[t], rule, setup_.rubric.image_ramp);
+            const bool image = (rule && rule->image) || outcome.image || !outcome.pictures.empty();
+            result.tests[t] = ScoredTest{std::move(outcome), rule ? rule->id : "", plan.max_cents[t], score, image};
+        };
+        for (std::size_t r = 0; r < lab.rules.size(); ++r) {
+            const std::optional<std::string> unmet = unmet_prerequisite(lab.rules[r], finished_);
+            std::vector<Failure>& failures = finished_[lab.lab + ":" + lab.rules[r].id];
+            for (std::size_t t = 0; t < run.names.size(); ++t) {
+                if (plan.rule_of_test[t] != &lab.rules[r]) continue;
+                grade_test(t, unmet);
+                if (result.tests[t].outcome.status != Status::passed) failures.push_back({run.names[t], result.tests[t].outcome.status});
+            }
+        }
+        for (std::size_t t = 0; t < run.names.size(); ++t)
+            if (!plan.rule_of_test[t]) grade_test(t, std::nullopt);
+        for (const ScoredTest& test : result.tests) {
+            result.score_cents += test.score_cents;
+            result.max_cents += test.max_cents;
+            if (test.outcome.status != Status::passed) setup_.progress("  " + test.outcome.name + ": " + std::string(status_label(test.outcome.status)));
+        }
+        return result;
+    }
+
+private:
+    // How one lab's tests are run: by which program, which tests, or why none of them runs.
+    struct LabRun {
+        TestProgram program;
+        std::vector<std::string> names;
+        std::optional<Status> lab_status; // when the lab's program cannot run at all
+        std::string lab_message;
+    };
+
+    TestProgram program(const std::string& lab, const std::string& prefix) const {
+        return {lab, setup_.build / "tests" / (prefix + lab), setup_.out / "tests" / lab, setup_.test_limits, paths_};
+    }
+
+    // Builds the student's lab file alone first, so that its errors are the ones shown.
+    void build_lab(const std::string& lab, LabRun& run, LabResult& result) {
+        setup_.progress("building " + lab);
+        BuildStep built = is_lab(lab) ? build_targets(folder_, {"student_" + lab}) : BuildStep{true, {}};
+        if (built.ok) built = build_targets(folder_, {"grade_" + lab});
+        if (built.ok) return;
+        run.lab_status = Status::compile_error;
+        run.lab_message = is_lab(lab) ? "labs/" + lab + ".cpp does not compile" : "the labs do not build together";
+        result.compile_errors = first_compiler_errors(built.log, paths_);
+    }
+
+    // The outcome of a test that is not run.
+    static TestOutcome not_run(const std::string& lab, const LabRun& run, std::size_t t, const std::optional<std::string>& reason) {
+        TestOutcome outcome;
+        outcome.lab = lab;
+        outcome.name = run.names[t];
+        outcome.status = run.lab_status.value_or(Status::skipped);
+        outcome.message = run.lab_status ? run.lab_message : reason.value_or("no rule of this lab could run");
+        return outcome;
+    }
+
+    // The test names from the lab's tests linked with the reference alone (list_<lab>), for a lab whose own program cannot list them.
+    std::vector<std::string> names_from_reference(const TestProgram& lister) {
+        const std::string target = lister.program.filename().string();
+        const BuildStep built = build_targets(folder_, {target});
+        if (!built.ok) throw GraderFailure("building " + target + " failed:\n" + first_compiler_errors(built.log, paths_));
+        std::string problem;
+        std::vector<std::string> names = list_tests(lister, problem);
+        if (!problem.empty()) throw GraderFailure("the reference tests do not list: " + problem);
+        return names;
+    }
+
+    const GradingSetup& setup_;
+    const std::vector<std::string>& missing_;
+    BuildFolder folder_;
+    std::vector<std::pair<std::string, std::string>> paths_;
+    RuleFailures finished_;
+};
+
+} // namespace
+
+std::vector<std::pair<std::string, std::string>> shown_paths(const GradingSetup& setup) {
+    return {{(setup.out / "labs").string() + "/", "labs/"},
+            {setup.out.string() + "/", ""},
+            {setup.build.string() + "/", "build/"},
+            {setup.instructor_tree.string() + "/", ""}};
+}
+
+GradingResult grade_submission(const GradingSetup& setup) {
+    std::vector<std::string> labs;
+    for (const LabRubric& lab : setup.rubric.labs)
+        if (is_lab(lab.lab)) labs.push_back(lab.lab);
+    const std::vector<std::string> missing =
+        copy_lab_files(setup.submission_labs, setup.instructor_tree / "labs", setup.out / "labs", labs);
+    fs::remove_all(setup.out / "tests");
+
+    LabGrader grader(setup, missing);
+    grader.build_shared_parts();
+    GradingResult result;
+    for (const LabRubric& lab : setup.rubric.labs) {
+        result.labs.push_back(grader.grade(lab));
+        result.score_cents += result.labs.back().score_cents;
+        result.max_cents += result.labs.back().max_cents;
+    }
+    return result;
+}
+
+} // namespace whitted::grade

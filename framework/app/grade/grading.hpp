@@ -1,0 +1,56 @@
+// Grading one submission, lab by lab in rubric order: build the lab's program,
+// list its tests, run each in its own process unless a prerequisite failed,
+// and score them with the rubric.
+#pragma once
+
+#include "grade/process_runner.hpp"
+#include "grade/rubric.hpp"
+#include "grade/scoring.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace whitted::grade {
+
+/// Grading cannot go on, and not because of the submission (exit code 3).
+struct GraderFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct GradingSetup {
+    std::filesystem::path instructor_tree; // absolute
+    std::filesystem::path submission_labs; // where the submission's lab files are
+    std::filesystem::path out;             // absolute; labs/ and tests/ are written here
+    std::filesystem::path build;           // absolute; out/build or a reused cache
+    Rubric rubric;
+    Limits test_limits;
+    int jobs = 2;
+    std::function<void(const std::string&)> progress = [](const std::string&) {};
+};
+
+struct LabResult {
+    std::string lab;
+    std::string title;
+    std::vector<ScoredTest> tests; // in the order the program lists them
+    std::string compile_errors;    // the compiler's first errors, when the lab did not build
+    std::vector<std::string> notes; // rubric notes: unmatched tests, unknown names
+    long score_cents = 0;
+    long max_cents = 0;
+};
+
+struct GradingResult {
+    std::vector<LabResult> labs;
+    long score_cents = 0;
+    long max_cents = 0;
+};
+
+/// Grades the submission. Throws GraderFailure when the instructor tree does not configure or build.
+GradingResult grade_submission(const GradingSetup& setup);
+
+/// Absolute path prefixes and what to show instead, for everything the student sees.
+std::vector<std::pair<std::string, std::string>> shown_paths(const GradingSetup& setup);
+
+} // namespace whitted::grade

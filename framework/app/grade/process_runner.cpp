@@ -1,0 +1,189 @@
+#include "grade/process_runner.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace whitted::grade {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// name=value strings: the grader's environment with the spec's entries added or replaced.
+std::vector<std::string> child_environment(const ProcessSpec& spec) {
+    std::vector<std::string> result;
+    for (char** entry = environ; *entry; ++entry) {
+        const std::string text = *entry;
+        bool replaced = false;
+        for (const auto& [name, value] : spec.environment) replaced |= text.rfind(name + "=", 0) == 0;
+        if (!replaced) result.push_back(text);
+    }
+    for (const auto& [name, value] : spec.environment) result.push_back(name + "=" + value);
+    return result;
+}
+
+std::vector<char*> c_strings(std::vector<std::string>& strings) {
+    std::vector<char*> result;
+    for (std::string& s : strings) result.push_back(s.data());
+    result.push_back(nullptr);
+    return result;
+}
+
+void set_limit(int resource, rlim_t soft, rlim_t hard) {
+    const rlimit limit{soft, hard};
+    setrlimit(resource, &limit);
+}
+
+// In the child, between fork and exec: only async-signal-safe calls.
+[[noreturn]] void become_child(const ProcessSpec& spec, char** argv, char** envp, int output_fd, int error_fd) {
+    setpgid(0, 0);
+    const Limits& l = spec.limits;
+    set_limit(RLIMIT_CORE, 0, 0);
+    if (l.cpu_seconds > 0) {
+        const rlim_t cpu = static_cast<rlim_t>(std::ceil(l.cpu_seconds));
+        set_limit(RLIMIT_CPU, cpu, cpu + 1);
+    }
+    if (l.address_space > 0) set_limit(RLIMIT_AS, l.address_space, l.address_space);
+    if (l.file_size > 0) set_limit(RLIMIT_FSIZE, l.file_size, l.file_size);
+    if (l.processes > 0) set_limit(RLIMIT_NPROC, l.processes, l.processes);
+    const int null_fd = open("/dev/null", O_RDONLY);
+    if (null_fd >= 0) dup2(null_fd, STDIN_FILENO);
+    dup2(output_fd, STDOUT_FILENO);
+    dup2(output_fd, STDERR_FILENO);
+    if (!spec.working_directory.empty() && chdir(spec.working_directory.c_str()) != 0) {
+        const int error = errno;
+        [[maybe_unused]] auto written = write(error_fd, &error, sizeof error);
+        _exit(127);
+    }
+    execvpe(argv[0], argv, envp);
+    const int error = errno;
+    [[maybe_unused]] auto written = write(error_fd, &error, sizeof error);
+    _exit(127);
+}
+
+// Keeps the first `limit` bytes of what arrives.
+void keep(ProcessRun& run, const char* data, std::size_t size, std::size_t limit) {
+    const std::size_t room = run.output.size() < limit ? limit - run.output.size() : 0;
+    run.output.append(data, std::min(room, size));
+    if (size > room) run.output_truncated = true;
+}
+
+} // namespace
+
+ProcessRun run_process(const ProcessSpec& spec) {
+    ProcessRun run;
+    std::vector<std::string> argv_strings = spec.argv;
+    std::vector<std::string> env_strings = child_environment(spec);
+    std::vector<char*> argv = c_strings(argv_strings);
+    std::vector<char*> envp = c_strings(env_strings);
+    int output[2], start_error[2];
+    if (argv_strings.empty() || pipe2(output, O_CLOEXEC) != 0) {
+        run.start_error = "no program given or no pipe";
+        return run;
+    }
+    if (pipe2(start_error, O_CLOEXEC) != 0) {
+        close(output[0]);
+        close(output[1]);
+        run.start_error = std::strerror(errno);
+        return run;
+    }
+    const Clock::time_point start = Clock::now();
+    const pid_t pid = fork();
+    if (pid == 0) become_child(spec, argv.data(), envp.data(), output[1], start_error[1]);
+    close(output[1]);
+    close(start_error[1]);
+    if (pid < 0) {
+        close(output[0]);
+        close(start_error[0]);
+        run.start_error = std::string("fork failed: ") + std::strerror(errno);
+        return run;
+    }
+    setpgid(pid, pid); // also done by the child; whichever runs first wins
+
+    const Clock::time_point deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                                   std::chrono::duration<double>(spec.limits.wall_seconds));
+    int output_fd = output[0];
+    bool reaped = false, timed_out = false;
+    int wait_status = 0;
+    char buffer[65536];
+    while (output_fd >= 0 || !reaped) {
+        const Clock::time_point now = Clock::now();
+        if (!reaped && !timed_out && now >= deadline) {
+            timed_out = true;
+            kill(-pid, SIGKILL);
+        }
+        if (output_fd >= 0 && now >= deadline + std::chrono::seconds(1)) {
+            close(output_fd); // a process that left the group still holds the output open: stop listening
+            output_fd = -1;
+        }
+        if (!reaped && waitpid(pid, &wait_status, WNOHANG) == pid) {
+            reaped = true;
+            kill(-pid, SIGKILL); // whatever it left behind still holds the output open
+        }
+        if (output_fd < 0) {
+            if (!reaped) usleep(2000);
+            continue;
+        }
+        pollfd poll_fd{output_fd, POLLIN, 0};
+        if (poll(&poll_fd, 1, 20) > 0) {
+            const ssize_t n = read(output_fd, buffer, sizeof buffer);
+            if (n > 0) {
+                keep(run, buffer, static_cast<std::size_t>(n), spec.limits.output_bytes);
+            } else if (n == 0 || (errno != EINTR && errno != EAGAIN)) {
+                close(output_fd);
+                output_fd = -1;
+            }
+        }
+    }
+    kill(-pid, SIGKILL);
+    run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+    int exec_errno = 0;
+    if (read(start_error[0], &exec_errno, sizeof exec_errno) == sizeof exec_errno) {
+        run.end = ProcessRun::End::failed_to_start;
+        run.start_error = spec.argv[0] + ": " + std::strerror(exec_errno);
+    } else if (timed_out) {
+        run.end = ProcessRun::End::timed_out;
+    } else if (WIFSIGNALED(wait_status)) {
+        run.end = ProcessRun::End::signalled;
+        run.signal = WTERMSIG(wait_status);
+    } else {
+        run.end = ProcessRun::End::exited;
+        run.exit_code = WEXITSTATUS(wait_status);
+    }
+    close(start_error[0]);
+    return run;
+}
+
+std::string signal_name(int signal) {
+    if (const char* abbreviation = sigabbrev_np(signal)) return std::string("SIG") + abbreviation;
+    return "signal " + std::to_string(signal);
+}
+
+std::string describe(const ProcessRun& run, const Limits& limits) {
+    char seconds[32];
+    switch (run.end) {
+    case ProcessRun::End::exited: return "exited with code " + std::to_string(run.exit_code);
+    case ProcessRun::End::signalled: {
+        const char* description = sigdescr_np(run.signal);
+        return "killed by " + signal_name(run.signal) + (description ? std::string(" (") + description + ")" : "");
+    }
+    case ProcessRun::End::timed_out:
+        std::snprintf(seconds, sizeof seconds, "%g", limits.wall_seconds);
+        return std::string("did not finish within ") + seconds + " s and was killed";
+    case ProcessRun::End::failed_to_start: return "could not start: " + run.start_error;
+    }
+    return "ended in an unknown way";
+}
+
+} // namespace whitted::grade

@@ -1,0 +1,56 @@
+// Runs one program in its own process group under resource limits, with a
+// wall-clock timeout that kills the whole group, and captures its output.
+//
+// Why: a student's code may crash, loop, sleep, eat memory, fill the disk or
+// print without end. None of that may take the grader down or stall it; each
+// ending is told apart so that it can be reported precisely.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace whitted::grade {
+
+/// Limits for one run; 0 means "no limit" for every field but wall_seconds.
+struct Limits {
+    double wall_seconds = 10.0;     // real time, then SIGKILL to the whole process group
+    double cpu_seconds = 0.0;       // RLIMIT_CPU: SIGXCPU at the limit (all threads count)
+    std::size_t address_space = 0;  // RLIMIT_AS in bytes: allocations beyond it fail
+    std::size_t file_size = 0;      // RLIMIT_FSIZE in bytes: SIGXFSZ when a file would grow beyond it
+    long processes = 0;             // RLIMIT_NPROC: counts all processes and threads of the user; root ignores it
+    std::size_t output_bytes = 8192; // stdout and stderr kept; the rest is read and dropped
+};
+
+/// What to run: argv[0] is looked up in PATH when it has no slash.
+struct ProcessSpec {
+    std::vector<std::string> argv;
+    std::filesystem::path working_directory; // empty: the grader's
+    std::vector<std::pair<std::string, std::string>> environment; // added to (or replacing in) the grader's
+    Limits limits;
+};
+
+/// How a run ended. Core dumps are always off (RLIMIT_CORE = 0).
+struct ProcessRun {
+    enum class End { exited, signalled, timed_out, failed_to_start };
+    End end = End::failed_to_start;
+    int exit_code = -1; // for End::exited
+    int signal = 0;     // for End::signalled
+    std::string output; // stdout and stderr interleaved, at most limits.output_bytes
+    bool output_truncated = false;
+    double seconds = 0.0; // wall clock
+    std::string start_error; // for End::failed_to_start
+};
+
+/// Runs the program and waits for it and everything it started (the process group).
+ProcessRun run_process(const ProcessSpec& spec);
+
+/// "SIGSEGV" for SIGSEGV, "signal 77" for a number without a name.
+std::string signal_name(int signal);
+
+/// One line: "exited with code 3", "killed by SIGSEGV (Segmentation fault)", "timed out after 10 s".
+std::string describe(const ProcessRun& run, const Limits& limits);
+
+} // namespace whitted::grade

@@ -1,0 +1,150 @@
+#include "grade/test_report.hpp"
+#include "grade/text.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <csignal>
+#include <fstream>
+#include <regex>
+#include <set>
+
+namespace whitted::grade {
+namespace {
+
+using nlohmann::json;
+
+const std::string kNotImplemented = "is not implemented yet";
+
+std::optional<json> read_json(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) return std::nullopt;
+    json value = json::parse(in, nullptr, false);
+    if (value.is_discarded()) return std::nullopt;
+    return value;
+}
+
+// The failure messages GoogleTest recorded for the test, or empty if it did not record the test.
+std::optional<std::vector<std::string>> recorded_failures(const std::optional<json>& report, const std::string& name) {
+    if (!report) return std::nullopt;
+    for (const json& suite : report->value("testsuites", json::array()))
+        for (const json& test : suite.value("testsuite", json::array())) {
+            if (suite.value("name", "") + "." + test.value("name", "") != name) continue;
+            std::vector<std::string> failures;
+            for (const json& failure : test.value("failures", json::array())) failures.push_back(failure.value("failure", ""));
+            return failures;
+        }
+    return std::nullopt;
+}
+
+// The test's own output without GoogleTest's banner lines (which hold durations) and without repeated failures.
+std::string own_output(const std::string& output, const std::vector<std::string>& failures) {
+    static const std::regex banner(R"(^(\[ *(RUN|OK|FAILED|PASSED|SKIPPED|==========|----------) *\]|Running main\(\)|Note: Google Test filter).*)");
+    std::set<std::string> failure_lines;
+    for (const std::string& failure : failures)
+        for (const std::string& line : split_lines(failure)) failure_lines.insert(line);
+    std::string kept;
+    for (const std::string& line : split_lines(output)) {
+        if (std::regex_match(line, banner) || failure_lines.count(line) || line.ends_with(": Failure")) continue;
+        kept += line + "\n";
+    }
+    return kept;
+}
+
+// The description of an exception GoogleTest caught, if the message reports one.
+std::optional<std::string> caught_exception(const std::string& failure) {
+    static const std::regex described(R"re(C\+\+ exception with description "([\s\S]*)" thrown in)re");
+    std::smatch match;
+    if (std::regex_search(failure, match, described)) return match[1].str();
+    if (failure.find("Unknown C++ exception thrown") != std::string::npos) return "an exception of unknown type";
+    return std::nullopt;
+}
+
+// The line of the output that names the unfinished function, from "labs/" on.
+std::string not_implemented_line(const std::string& text) {
+    for (const std::string& line : split_lines(text)) {
+        const std::size_t end = line.find(kNotImplemented);
+        if (end == std::string::npos) continue;
+        std::size_t begin = line.rfind("labs/", end);
+        if (begin == std::string::npos) begin = line.find_first_not_of(" \t");
+        return line.substr(begin, end + kNotImplemented.size() - begin);
+    }
+    return "a lab function " + kNotImplemented;
+}
+
+void classify_failures(TestOutcome& outcome, const std::vector<std::string>& failures) {
+    outcome.status = Status::failed;
+    for (const std::string& failure : failures) {
+        const std::optional<std::string> exception = caught_exception(failure);
+        if (exception && exception->find(kNotImplemented) != std::string::npos) {
+            outcome.status = Status::not_implemented;
+            outcome.message = not_implemented_line(*exception);
+            return;
+        }
+        if (exception && outcome.status != Status::exception) {
+            outcome.status = Status::exception;
+            outcome.message = "exception: " + split_lines(*exception).front();
+        }
+    }
+    if (outcome.status == Status::failed) {
+        // The first line that says something: not GoogleTest's "file:line" or a bare "Failed".
+        static const std::regex location(R"(^\S+:\d+$|^Failed$|^Failure$|^\s*$)");
+        outcome.message = "an assertion failed";
+        for (const std::string& failure : failures)
+            for (const std::string& line : split_lines(failure))
+                if (!std::regex_match(line, location)) {
+                    outcome.message = line;
+                    return;
+                }
+    }
+}
+
+} // namespace
+
+void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& limits, const std::filesystem::path& report_file) {
+    const std::optional<json> report = read_json(report_file);
+    const std::optional<std::vector<std::string>> failures = recorded_failures(report, outcome.name);
+    if (run.end == ProcessRun::End::timed_out) {
+        outcome.status = Status::timeout;
+        outcome.message = describe(run, limits);
+    } else if (run.end == ProcessRun::End::signalled && run.signal == SIGXCPU) {
+        outcome.status = Status::timeout;
+        outcome.message = "used more than " + std::to_string(static_cast<long>(limits.cpu_seconds)) + " s of CPU time and was killed";
+    } else if (run.end == ProcessRun::End::signalled && run.output.find(kNotImplemented) != std::string::npos) {
+        outcome.status = Status::not_implemented; // thrown where nothing caught it: std::terminate
+        outcome.message = not_implemented_line(run.output);
+    } else if (run.end != ProcessRun::End::exited) {
+        outcome.status = Status::crash;
+        outcome.message = describe(run, limits);
+    } else if (!failures) {
+        outcome.status = Status::crash;
+        outcome.message = "the test program " + describe(run, limits) + " before reporting a result";
+    } else if (failures->empty() && run.exit_code == 0) {
+        outcome.status = Status::passed;
+    } else {
+        classify_failures(outcome, *failures);
+    }
+    std::string details;
+    if (failures)
+        for (const std::string& failure : *failures) details += failure + "\n";
+    details += own_output(run.output, failures.value_or(std::vector<std::string>{}));
+    if (run.output_truncated) details += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
+    outcome.output = details;
+}
+
+
+std::optional<ImageNumbers> read_image_numbers(const std::filesystem::path& file) {
+    const std::optional<json> value = read_json(file);
+    if (!value || !value->is_object()) return std::nullopt;
+    ImageNumbers numbers;
+    numbers.passed = value->value("passed", false);
+    numbers.failing_fraction = value->value("failing_fraction", 1.0);
+    numbers.mean_error = value->value("mean_error", 1.0);
+    numbers.max_error = value->value("max_error", 1.0);
+    numbers.worst_x = value->value("worst_x", 0);
+    numbers.worst_y = value->value("worst_y", 0);
+    numbers.non_finite_pixels = value->value("non_finite_pixels", 0LL);
+    if (value->contains("psnr") && (*value)["psnr"].is_number()) numbers.psnr = (*value)["psnr"].get<double>();
+    return numbers;
+}
+
+} // namespace whitted::grade

@@ -1,0 +1,21 @@
+// Reading what one test run left behind: how the test ended (from its process
+// and GoogleTest's JSON report) and, for image tests, the gate's numbers.
+#pragma once
+
+#include "grade/outcome.hpp"
+#include "grade/process_runner.hpp"
+
+#include <filesystem>
+#include <optional>
+
+namespace whitted::grade {
+
+/// Sets the outcome's status, one-line message and details (failure messages
+/// and the test's own output, without GoogleTest's timings). `report_file` is
+/// GoogleTest's JSON report; a test that never wrote it crashed.
+void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& limits, const std::filesystem::path& report_file);
+
+/// Reads tests/support's image.json; empty if the file is missing or unreadable.
+std::optional<ImageNumbers> read_image_numbers(const std::filesystem::path& file);
+
+} // namespace whitted::grade

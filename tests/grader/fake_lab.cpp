@@ -1,0 +1,42 @@
+// A stand-in for a grade_<lab> program: one test for each way a lab test can end.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+#include <thread>
+
+TEST(Fake, Passes) { EXPECT_EQ(2 + 2, 4); }
+
+TEST(Fake, GivesAWrongAnswer) { EXPECT_EQ(2 + 2, 5) << "arithmetic is broken"; }
+
+TEST(Fake, CallsAStub) { throw std::logic_error("labs/02_shadows.cpp:14: spawn_ray() is not implemented yet"); }
+
+TEST(Fake, ThrowsSomethingElse) { throw std::runtime_error("the scene has no camera"); }
+
+TEST(Fake, Segfaults) {
+    volatile int* nowhere = nullptr;
+    *nowhere = 1;
+}
+
+TEST(Fake, Loops) {
+    volatile unsigned long counter = 0;
+    for (;;) counter = counter + 1;
+}
+
+TEST(Fake, StubThrowsInAThread) {
+    std::thread worker([] { throw std::logic_error("labs/05_refraction.cpp:20: refracted_direction() is not implemented yet"); });
+    worker.join();
+}
+
+// Writes what tests/support/image_check.cpp writes for the grader: an image 2 % wrong.
+TEST(FakeImage, IsTwoPercentOff) {
+    const char* folder = std::getenv("WHITTED_TEST_OUTPUT");
+    ASSERT_NE(folder, nullptr);
+    std::ofstream(std::string(folder) + "/image.json")
+        << R"({"passed": false, "failing_fraction": 0.02, "mean_error": 0.01, "max_error": 0.5, "worst_x": 3, "worst_y": 4, "psnr": 30.5, "non_finite_pixels": 0})";
+    std::ofstream(std::string(folder) + "/reference.png") << "not really a png";
+    ADD_FAILURE() << "the image differs";
+}
+
+TEST(HiddenFake, Passes) { SUCCEED(); }

@@ -1,0 +1,58 @@
+// A program that misbehaves on request, for the process runner's tests:
+//   misbehaving_child exit N | segfault | abort | loop | sleep | allocate | big-file | spew MB | env NAME | orphan
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+int main(int argc, char** argv) {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    const std::string argument = argc > 2 ? argv[2] : "";
+    if (mode == "exit") return std::atoi(argument.c_str());
+    if (mode == "segfault") {
+        volatile int* nowhere = nullptr;
+        *nowhere = 1;
+    }
+    if (mode == "abort") std::abort();
+    if (mode == "loop") {
+        volatile unsigned long counter = 0;
+        for (;;) counter = counter + 1;
+    }
+    if (mode == "sleep") std::this_thread::sleep_for(std::chrono::hours(1));
+    if (mode == "allocate") {
+        std::vector<char*> blocks;
+        for (;;) {
+            char* block = new char[64 << 20];
+            std::memset(block, 1, 64 << 20);
+            blocks.push_back(block);
+        }
+    }
+    if (mode == "big-file") {
+        std::ofstream out("big.bin", std::ios::binary);
+        const std::string megabyte(1 << 20, 'x');
+        for (;;) out << megabyte << std::flush;
+    }
+    if (mode == "spew") {
+        const std::string line(1023, 'y');
+        for (long i = 0; i < std::atol(argument.c_str()) * 1024; ++i) std::printf("%s\n", line.c_str());
+        return 0;
+    }
+    if (mode == "env") {
+        const char* value = std::getenv(argument.c_str());
+        std::printf("%s\n", value ? value : "(unset)");
+        return 0;
+    }
+    if (mode == "orphan") { // leaves a sleeping child that holds the output open
+        if (fork() == 0) std::this_thread::sleep_for(std::chrono::hours(1));
+        std::printf("parent done\n");
+        return 0;
+    }
+    std::fprintf(stderr, "unknown mode '%s'\n", mode.c_str());
+    return 2;
+}

@@ -1,0 +1,118 @@
+// The process runner tells every way a child can end apart, and survives all of them.
+#include "grade/process_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+
+using namespace whitted::grade;
+
+namespace {
+
+ProcessRun run_child(std::vector<std::string> arguments, Limits limits = {}) {
+    arguments.insert(arguments.begin(), MISBEHAVING_CHILD);
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("runner_test_" + std::to_string(getpid()));
+    std::filesystem::create_directories(folder);
+    ProcessRun run = run_process({arguments, folder, {{"WHITTED_RUNNER_TEST", "42"}}, limits});
+    std::filesystem::remove_all(folder);
+    return run;
+}
+
+Limits short_limits() {
+    Limits limits;
+    limits.wall_seconds = 1.0;
+    return limits;
+}
+
+} // namespace
+
+TEST(ProcessRunner, ExitCodeIsReported) {
+    const ProcessRun run = run_child({"exit", "3"});
+    EXPECT_EQ(run.end, ProcessRun::End::exited);
+    EXPECT_EQ(run.exit_code, 3);
+    EXPECT_EQ(describe(run, {}), "exited with code 3");
+}
+
+TEST(ProcessRunner, SegfaultIsASignalNamedSIGSEGV) {
+    const ProcessRun run = run_child({"segfault"});
+    ASSERT_EQ(run.end, ProcessRun::End::signalled);
+    EXPECT_EQ(signal_name(run.signal), "SIGSEGV");
+    EXPECT_EQ(describe(run, {}).rfind("killed by SIGSEGV", 0), 0u);
+}
+
+TEST(ProcessRunner, AbortIsSIGABRT) {
+    const ProcessRun run = run_child({"abort"});
+    ASSERT_EQ(run.end, ProcessRun::End::signalled);
+    EXPECT_EQ(run.signal, SIGABRT);
+}
+
+TEST(ProcessRunner, EndlessLoopTimesOutOnTheWallClock) {
+    const ProcessRun run = run_child({"loop"}, short_limits());
+    EXPECT_EQ(run.end, ProcessRun::End::timed_out);
+    EXPECT_LT(run.seconds, 3.0);
+    EXPECT_EQ(describe(run, short_limits()), "did not finish within 1 s and was killed");
+}
+
+TEST(ProcessRunner, EndlessLoopHitsTheCpuLimit) {
+    Limits limits;
+    limits.wall_seconds = 10.0;
+    limits.cpu_seconds = 1.0;
+    const ProcessRun run = run_child({"loop"}, limits);
+    ASSERT_EQ(run.end, ProcessRun::End::signalled);
+    EXPECT_EQ(run.signal, SIGXCPU);
+}
+
+TEST(ProcessRunner, SleepingChildIsKilledAtTheTimeout) {
+    const ProcessRun run = run_child({"sleep"}, short_limits());
+    EXPECT_EQ(run.end, ProcessRun::End::timed_out);
+    EXPECT_LT(run.seconds, 3.0);
+}
+
+TEST(ProcessRunner, UnboundedAllocationFailsInsideTheAddressSpaceLimit) {
+    Limits limits;
+    limits.address_space = std::size_t(512) << 20;
+    const ProcessRun run = run_child({"allocate"}, limits);
+    ASSERT_EQ(run.end, ProcessRun::End::signalled); // std::bad_alloc, uncaught: std::terminate
+    EXPECT_EQ(run.signal, SIGABRT);
+    EXPECT_NE(run.output.find("bad_alloc"), std::string::npos) << run.output;
+}
+
+TEST(ProcessRunner, HugeFileStopsAtTheFileSizeLimit) {
+    Limits limits;
+    limits.file_size = std::size_t(4) << 20;
+    const ProcessRun run = run_child({"big-file"}, limits);
+    ASSERT_EQ(run.end, ProcessRun::End::signalled);
+    EXPECT_EQ(signal_name(run.signal), "SIGXFSZ");
+}
+
+TEST(ProcessRunner, MegabytesOfOutputAreCutButReadToTheEnd) {
+    Limits limits;
+    limits.output_bytes = 4096;
+    const ProcessRun run = run_child({"spew", "20"}, limits);
+    EXPECT_EQ(run.end, ProcessRun::End::exited);
+    EXPECT_EQ(run.exit_code, 0);
+    EXPECT_EQ(run.output.size(), 4096u);
+    EXPECT_TRUE(run.output_truncated);
+}
+
+TEST(ProcessRunner, EnvironmentEntriesReachTheChild) {
+    const ProcessRun run = run_child({"env", "WHITTED_RUNNER_TEST"});
+    EXPECT_EQ(run.output, "42\n");
+    EXPECT_FALSE(run.output_truncated);
+}
+
+TEST(ProcessRunner, ChildrenLeftBehindAreKilledWithTheGroup) {
+    const auto start = std::chrono::steady_clock::now();
+    const ProcessRun run = run_child({"orphan"}, short_limits());
+    EXPECT_EQ(run.end, ProcessRun::End::exited);
+    EXPECT_EQ(run.output, "parent done\n");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0.9);
+}
+
+TEST(ProcessRunner, MissingProgramFailsToStart) {
+    const ProcessRun run = run_process({{"/no/such/program"}, {}, {}, {}});
+    EXPECT_EQ(run.end, ProcessRun::End::failed_to_start);
+    EXPECT_NE(run.start_error.find("No such file"), std::string::npos) << run.start_error;
+}

@@ -1,0 +1,77 @@
+// results.json follows Gradescope's format and is the same bytes every time;
+// report.html is self-contained.
+#include "grade/html_report.hpp"
+#include "grade/results_json.hpp"
+#include "grade/text.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+using namespace whitted::grade;
+
+namespace {
+
+GradingResult sample() {
+    GradingResult result;
+    LabResult lab;
+    lab.lab = "02_shadows";
+    lab.title = "Lab 2: shadows";
+    TestOutcome passed;
+    passed.name = "SpawnRay.Grazing";
+    passed.status = Status::passed;
+    TestOutcome stub;
+    stub.name = "HiddenShading.Lambert";
+    stub.status = Status::not_implemented;
+    stub.message = "labs/02_shadows.cpp:14: spawn_ray() is not implemented yet";
+    lab.tests = {{passed, "unit", 333, 333}, {stub, "hidden", 167, 0}};
+    lab.score_cents = 333;
+    lab.max_cents = 500;
+    result.labs.push_back(lab);
+    result.score_cents = 333;
+    result.max_cents = 500;
+    return result;
+}
+
+} // namespace
+
+TEST(ResultsJson, HasGradescopesFieldsAndHidesHiddenTests) {
+    const nlohmann::json json = nlohmann::json::parse(results_json(sample()));
+    EXPECT_EQ(json["score"], 3.33);
+    EXPECT_EQ(json["visibility"], "visible");
+    EXPECT_EQ(json["stdout_visibility"], "hidden");
+    ASSERT_EQ(json["tests"].size(), 2u);
+    const nlohmann::json& hidden = json["tests"][1];
+    EXPECT_EQ(hidden["name"], "Lab 2: shadows: HiddenShading.Lambert");
+    EXPECT_EQ(hidden["number"], "1.2");
+    EXPECT_EQ(hidden["score"], 0.0);
+    EXPECT_EQ(hidden["max_score"], 1.67);
+    EXPECT_EQ(hidden["status"], "failed");
+    EXPECT_EQ(hidden["visibility"], "hidden");
+    EXPECT_EQ(json["tests"][0]["visibility"], "visible");
+    EXPECT_EQ(hidden["output"], "not implemented: labs/02_shadows.cpp:14: spawn_ray() is not implemented yet\n");
+    EXPECT_FALSE(json.contains("execution_time"));
+}
+
+TEST(ResultsJson, SameResultGivesTheSameBytes) { EXPECT_EQ(results_json(sample()), results_json(sample())); }
+
+TEST(ResultsJson, AGraderFailureStillWritesValidJsonWithScoreZero) {
+    const nlohmann::json json = nlohmann::json::parse(results_json(GradingResult{}, "configuring failed"));
+    EXPECT_EQ(json["score"], 0.0);
+    EXPECT_NE(json["output"].get<std::string>().find("configuring failed"), std::string::npos);
+}
+
+TEST(HtmlReport, ListsFailuresFirstAndLoadsNothingFromOutside) {
+    const std::string html = html_report(sample());
+    EXPECT_LT(html.find("HiddenShading.Lambert"), html.find("SpawnRay.Grazing"));
+    EXPECT_EQ(html.find("http"), std::string::npos);
+    EXPECT_NE(html.find("3.33 / 5.00"), std::string::npos);
+}
+
+TEST(Text, PathsBecomeRelativeLongestFirst) {
+    EXPECT_EQ(replace_paths("/tmp/out/labs/x.cpp:3 and /tmp/out/build/y and /src/tests/z",
+                            {{"/tmp/out/", ""}, {"/tmp/out/labs/", "labs/"}, {"/src/", ""}}),
+              "labs/x.cpp:3 and build/y and tests/z");
+    EXPECT_EQ(format_points(1234), "12.34");
+    EXPECT_EQ(format_points(5), "0.05");
+    EXPECT_EQ(trim_text("a\nb\nc\n", 2), "a\nb\n[... 1 more lines]\n");
+}

@@ -1,0 +1,78 @@
+// Each GoogleTest test runs in its own process and ends with the right status.
+#include "grade/test_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <unistd.h>
+
+using namespace whitted::grade;
+
+namespace {
+
+class TestRunnerTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder = std::filesystem::temp_directory_path() / ("test_runner_test_" + std::to_string(getpid()));
+        program = TestProgram{"02_shadows", FAKE_LAB, folder, {}, {{folder.string() + "/", ""}}};
+        program.limits.wall_seconds = 1.0;
+    }
+    void TearDown() override { std::filesystem::remove_all(folder); }
+
+    std::filesystem::path folder;
+    TestProgram program;
+};
+
+} // namespace
+
+TEST_F(TestRunnerTest, ListsEveryTestInOrder) {
+    std::string problem;
+    const std::vector<std::string> names = list_tests(program, problem);
+    EXPECT_EQ(problem, "");
+    const std::vector<std::string> expected = {"Fake.Passes", "Fake.GivesAWrongAnswer", "Fake.CallsAStub", "Fake.ThrowsSomethingElse",
+                                               "Fake.Segfaults", "Fake.Loops", "Fake.StubThrowsInAThread",
+                                               "FakeImage.IsTwoPercentOff", "HiddenFake.Passes"};
+    EXPECT_EQ(names, expected);
+}
+
+TEST_F(TestRunnerTest, ListingAProgramThatDoesNotStartSaysSo) {
+    program.program = "/no/such/grade_program";
+    std::string problem;
+    EXPECT_TRUE(list_tests(program, problem).empty());
+    EXPECT_NE(problem.find("could not start"), std::string::npos) << problem;
+}
+
+TEST_F(TestRunnerTest, EveryEndingHasItsStatus) {
+    const std::map<std::string, Status> expected = {
+        {"Fake.Passes", Status::passed},           {"Fake.GivesAWrongAnswer", Status::failed},
+        {"Fake.CallsAStub", Status::not_implemented}, {"Fake.ThrowsSomethingElse", Status::exception},
+        {"Fake.Segfaults", Status::crash},         {"Fake.Loops", Status::timeout},
+        {"Fake.StubThrowsInAThread", Status::not_implemented}, {"HiddenFake.Passes", Status::passed}};
+    for (const auto& [name, status] : expected) {
+        const TestOutcome outcome = run_test(program, name);
+        EXPECT_EQ(status_name(outcome.status), status_name(status)) << name << ": " << outcome.message << "\n" << outcome.output;
+    }
+}
+
+TEST_F(TestRunnerTest, MessagesSayWhatHappened) {
+    EXPECT_EQ(run_test(program, "Fake.CallsAStub").message, "labs/02_shadows.cpp:14: spawn_ray() is not implemented yet");
+    EXPECT_EQ(run_test(program, "Fake.StubThrowsInAThread").message,
+              "labs/05_refraction.cpp:20: refracted_direction() is not implemented yet");
+    EXPECT_EQ(run_test(program, "Fake.ThrowsSomethingElse").message, "exception: the scene has no camera");
+    EXPECT_EQ(run_test(program, "Fake.Segfaults").message.rfind("killed by SIGSEGV", 0), 0u);
+    EXPECT_EQ(run_test(program, "Fake.Loops").message, "did not finish within 1 s and was killed");
+    const TestOutcome wrong = run_test(program, "Fake.GivesAWrongAnswer");
+    EXPECT_EQ(wrong.message, "Expected equality of these values:");
+    EXPECT_NE(wrong.output.find("arithmetic is broken"), std::string::npos) << wrong.output;
+    EXPECT_EQ(wrong.output.find(" ms)"), std::string::npos) << "no durations: " << wrong.output;
+}
+
+TEST_F(TestRunnerTest, ImageNumbersAndPicturesAreCollected) {
+    const TestOutcome outcome = run_test(program, "FakeImage.IsTwoPercentOff");
+    EXPECT_EQ(outcome.status, Status::failed);
+    ASSERT_TRUE(outcome.image.has_value());
+    EXPECT_DOUBLE_EQ(outcome.image->failing_fraction, 0.02);
+    EXPECT_EQ(outcome.image->worst_x, 3);
+    EXPECT_EQ(outcome.pictures, folder / "FakeImage.IsTwoPercentOff");
+}
