@@ -14,7 +14,9 @@ double fresnel_reflectance(double cos_theta_i, double eta_i, double eta_t) {
 
 // The light a transparent surface sends towards wo: Kr x (reflected light) +
 // (1 - Kr) x T x (refracted light), with one ray traced in each direction
-// (weights Kr and (1 - Kr) T). On total internal reflection everything is reflected.
+// (weights Kr and (1 - Kr) T). Here T is material.transmittance; the slides'
+// "T = 1 - Kr" is the (1 - Kr) factor. On total internal reflection everything
+// is reflected.
 Color fresnel_blend(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth) {
     not_implemented();
 }

@@ -7,8 +7,8 @@
 //     incoming ray (wo = -ray.direction); wi points from the surface outwards
 //     (towards a light, or along a new reflected / refracted ray);
 //   - hit.normal is a unit vector on the same side as wo (see hit.hpp);
-//   - eta_i is the index of refraction on the side the light arrives from
-//     (the side of wo), eta_t the one on the other side (air is 1).
+//   - eta_i is the index of refraction on the side of wo (where the ray we
+//     trace comes from), eta_t the one on the other side (air is 1).
 #pragma once
 
 #include "whitted/camera.hpp"
