@@ -18,7 +18,7 @@
 //           "optional": true,             optional: may match no test; its points then go to the lab's
 //                                         other rules, in proportion (hidden tests that are not written yet)
 //           "image": true | RAMP }        optional: the tests compare images; partial credit on the ramp
-//   RAMP: { "full_below": 0.005, "zero_at": 0.10, "most": 0.75 }
+//   RAMP: { "full_below": 0.02, "zero_at": 0.10, "most": 0.75 }
 //         a failing image test with a fraction f of failing pixels earns
 //         most * clamp((zero_at - f) / (zero_at - full_below), 0, 1) of its points.
 // Each test counts for the first rule (in file order) that matches it; tests
@@ -39,7 +39,7 @@ struct RubricError : std::runtime_error {
 };
 
 struct ImageRamp {
-    double full_below = 0.005; // the image gate's own limit on failing pixels
+    double full_below = 0.02;  // the image gate's own limit on failing pixels
     double zero_at = 0.10;
     double most = 0.75; // a failing image never earns more than this share
     /// The share of the points for a failing image with this fraction of failing pixels.
