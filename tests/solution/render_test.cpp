@@ -38,6 +38,14 @@ SceneData effects_scene(int size) {
     return data;
 }
 
+// Adds a hollow glass shell (the classic scene's) in front of the spheres:
+// every hit on it spawns a reflected and a refracted ray.
+SceneData with_hollow_shell(SceneData data) {
+    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.7}, 2});
+    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.65, true}, 2});
+    return data;
+}
+
 bool bit_identical(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height &&
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
@@ -102,10 +110,7 @@ TEST(Render, AnExceptionInAnyThreadReachesTheCaller) {
 TEST(Render, AdaptiveDepthControlSavesRaysWithoutChangingThePicture) {
     // A hollow glass shell at depth 12 spawns two rays at every hit; pruning rays whose
     // accumulated weight is below 1/1024 must cut the ray count and stay within the image gate.
-    SceneData data = effects_scene(48);
-    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.7}, 2});
-    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.65, true}, 2});
-    const Scene scene(std::move(data));
+    const Scene scene(with_hollow_shell(effects_scene(48)));
     RenderSettings every_ray;
     every_ray.max_depth = 12;
     every_ray.min_weight = 0.0;
@@ -121,10 +126,7 @@ TEST(Render, AdaptiveDepthControlSavesRaysWithoutChangingThePicture) {
 TEST(Render, TheRayBudgetStopsRayTreesThatWouldGrowWithoutBound) {
     // A hollow glass shell at depth 100 with adaptive depth control off doubles its
     // ray tree at every hit: about 2^100 rays. The per-pixel budget must end it.
-    SceneData data = effects_scene(16);
-    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.7}, 2});
-    data.primitives.push_back({Sphere{Point3(0.0, 1.0, 2.0), 0.65, true}, 2});
-    const Scene scene(std::move(data));
+    const Scene scene(with_hollow_shell(effects_scene(16)));
     RenderSettings settings;
     settings.max_depth = 100;
     settings.min_weight = 0.0;
