@@ -134,11 +134,11 @@ TEST(Scoring, PrerequisitesSkipWithTheFirstFailureAsReason) {
 
 TEST(Scoring, FailingImagesEarnPartialCreditOnTheRamp) {
     const Rubric rubric = parse_rubric(kValid, "rubric.json", kLabs);
-    const Rule& image = rubric.labs[0].rules[2]; // most 0.5, full_below 0.005, zero_at 0.10
+    const Rule& image = rubric.labs[0].rules[2]; // most 0.5, full_below 0.02 (the default), zero_at 0.10
     TestOutcome outcome;
     outcome.status = Status::failed;
     outcome.image = ImageNumbers{};
-    outcome.image->failing_fraction = 0.0525; // half way down the ramp
+    outcome.image->failing_fraction = 0.06; // half way down the ramp: (0.10 - 0.06) / (0.10 - 0.02)
     EXPECT_EQ(score_test(outcome, 400, &image, rubric.image_ramp), 100);
     outcome.image->failing_fraction = 0.5;
     EXPECT_EQ(score_test(outcome, 400, &image, rubric.image_ramp), 0);
