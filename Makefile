@@ -35,6 +35,7 @@ else
 	@bash scripts/lab-progress.sh $(BUILD_DIR)
 endif
 
+ifneq ($(wildcard solution/01_ray_casting.cpp),)
 test-grader: build
 	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-grader.sh
 
@@ -51,6 +52,11 @@ handout:
 # Instructors: prove the tests catch every stub and every catalogued mistake.
 proofs:
 	@bash scripts/prove-tests.sh
+else
+# The student handout has no reference solution: these are the instructor's.
+test-grader references handout proofs:
+	@echo "make $@ is for instructors: it needs the instructor's tree (solution/, tests/hidden/)"; exit 2
+endif
 
 clean:
 	rm -rf $(BUILD_DIR)

@@ -4,6 +4,7 @@
 set -uo pipefail
 build=${1:-build}
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+source_dir=$(pwd)
 cd "$build" || exit 1
 
 ctest -j"$jobs" > Testing/progress.log 2>&1
@@ -24,6 +25,9 @@ for n in 1 2 3 4 5 6; do
     [ "$passed" -eq "$total" ] && mark="ok"
     printf '%s lab %d (%s): %d/%d tests pass\n' "$mark" "$n" "${titles[$((n - 1))]}" "$passed" "$total"
     if [ "$passed" -ne "$total" ]; then
+        lab_file=$(ls "$source_dir"/labs/0${n}_*.cpp 2>/dev/null | head -1)
+        left=$( [ -n "$lab_file" ] && grep -c "not_implemented();" "$lab_file" || echo 0)
+        [ "$left" -gt 0 ] && echo "     $left function(s) in labs/$(basename "$lab_file") still call not_implemented()"
         stubs=$(grep -oE "labs/0${n}_[a-z_]+\.cpp:[0-9]+: [a-z_]+\(\) is not implemented yet" "$log" 2>/dev/null | sort -u)
         if [ -n "$stubs" ]; then
             printf '%s\n' "$stubs" | sed 's/^/     /'

@@ -1,5 +1,7 @@
 #include "grade/outcome.hpp"
 
+#include "whitted/image_compare.hpp"
+
 #include <cstdio>
 
 namespace whitted::grade {
@@ -37,11 +39,13 @@ const std::vector<Status>& all_statuses() {
 std::string image_summary(const ImageNumbers& image) {
     char psnr[32] = "inf";
     if (image.psnr) std::snprintf(psnr, sizeof psnr, "%.1f", *image.psnr);
-    char line[256];
+    const ImageGate gate;
+    char line[320];
     std::snprintf(line, sizeof line,
-                  "image gate %s: %.3f %% of the pixels off by more than 4/255 (limit 0.5 %%), mean error %.2f/255 "
-                  "(limit 1), max error %.0f/255 at (%d, %d), PSNR %s dB, %lld NaN/Inf pixels",
-                  image.passed ? "passed" : "failed", 100.0 * image.failing_fraction, 255.0 * image.mean_error,
+                  "image gate %s: %.3f %% of the pixels off by more than %.0f/255 (limit %g %%), mean error %.2f/255 "
+                  "(limit %g), max error %.0f/255 at (%d, %d), PSNR %s dB, %lld NaN/Inf pixels",
+                  image.passed ? "passed" : "failed", 100.0 * image.failing_fraction, 255.0 * gate.pixel_tolerance,
+                  100.0 * gate.max_failing_fraction, 255.0 * image.mean_error, 255.0 * gate.max_mean_error,
                   255.0 * image.max_error, image.worst_x, image.worst_y, psnr, image.non_finite_pixels);
     return line;
 }

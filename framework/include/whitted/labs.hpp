@@ -1,7 +1,7 @@
 // The lab contract: every function the six labs ask you to write.
 //
-// Your code goes in labs/NN_*.cpp; solution/NN_*.cpp holds the reference with the
-// same names. The framework calls these functions and nothing else of yours.
+// Your code goes in labs/NN_*.cpp, one file per lab. The framework calls these
+// functions and nothing else of yours.
 // Conventions used everywhere:
 //   - directions are unit vectors; wo points from the surface back along the
 //     incoming ray (wo = -ray.direction); wi points from the surface outwards
