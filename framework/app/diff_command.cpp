@@ -1,6 +1,7 @@
 // `whitted diff A B`: compare two images with the grader's image gate.
 #include "commands.hpp"
 #include "whitted/image_compare.hpp"
+#include "whitted/image_pictures.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -20,15 +21,7 @@ int run_diff(const DiffOptions& options) {
     const Image test = read_image(options.test);
     const ImageDifference difference = compare_images(reference, test);
     std::printf("%s\n", difference.summary().c_str());
-    if (!options.output.empty() && difference.same_size) {
-        // The absolute difference, 16 times brighter; NaN and infinity in magenta.
-        Image diff(test.width, test.height);
-        for (std::size_t i = 0; i < diff.pixels.size(); ++i) {
-            const Color d = glm::abs(test.pixels[i] - reference.pixels[i]) * 16.0;
-            diff.pixels[i] = is_finite(d) ? d : Color(1.0, 0.0, 1.0);
-        }
-        write_image(diff, options.output);
-    }
+    if (!options.output.empty() && difference.same_size) write_image(difference_picture(test, reference), options.output);
     return difference.passed ? 0 : 1;
 }
 

@@ -1,6 +1,7 @@
 // `whitted render`: render an NFF or P3F scene to an image.
 #include "commands.hpp"
 #include "progress.hpp"
+#include "whitted/image_pictures.hpp"
 #include "whitted/lab_status.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
@@ -15,8 +16,6 @@
 
 namespace whitted {
 namespace {
-
-
 
 struct RenderOptions {
     std::string scene;
@@ -121,11 +120,7 @@ int run_render(const RenderOptions& options) {
                                    : options.output;
     // A NaN or infinite colour is a bug in the shading code: show it, loudly.
     const std::size_t broken = count_non_finite(result.image);
-    if (broken > 0) {
-        for (Color& c : result.image.pixels)
-            if (!is_finite(c)) c = Color(1.0, 0.0, 1.0);
-    }
-    write_image(result.image, output, options.srgb ? Encoding::srgb : Encoding::linear);
+    write_image(with_broken_pixels_marked(result.image), output, options.srgb ? Encoding::srgb : Encoding::linear);
     if (!options.quiet) {
         std::printf("wrote %s (%dx%d, stage %d): rendered in %.3f s, scene loaded and built in %.3f s\n",
                     std::filesystem::absolute(output).lexically_normal().c_str(), width, height, *stage,

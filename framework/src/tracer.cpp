@@ -13,17 +13,21 @@ RayStats& RayStats::operator+=(const RayStats& other) {
     return *this;
 }
 
+void RayStats::count(RayKind kind) {
+    switch (kind) {
+    case RayKind::eye: ++eye; break;
+    case RayKind::shadow: ++shadow; break;
+    case RayKind::reflected: ++reflected; break;
+    case RayKind::refracted: ++refracted; break;
+    }
+}
+
 Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
     const Color parent_weight = path_weight_;
     const Color path_weight = parent_weight * weight;
     if (kind != RayKind::eye && glm::all(glm::lessThan(path_weight, Color(settings_.min_weight)))) return Color(0.0);
     if (!within_budget()) return Color(0.0);
-    switch (kind) {
-    case RayKind::eye: ++stats_.eye; break;
-    case RayKind::shadow: ++stats_.shadow; break;
-    case RayKind::reflected: ++stats_.reflected; break;
-    case RayKind::refracted: ++stats_.refracted; break;
-    }
+    stats_.count(kind);
     path_weight_ = path_weight;
     const Color color = shade(ray, depth);
     path_weight_ = parent_weight;
@@ -68,7 +72,7 @@ bool Tracer::within_budget() const {
 
 bool Tracer::occluded(const Ray& ray, double distance) const {
     if (!within_budget()) return true; // over budget: no more light is gathered for this pixel
-    ++stats_.shadow;
+    stats_.count(RayKind::shadow);
     return scene_.occluded(ray, Interval{0.0, distance * (1.0 - 1e-6)});
 }
 

@@ -23,6 +23,8 @@ struct RayStats {
     std::uint64_t pixels_cut_short = 0; // pixels whose ray tree reached RenderSettings::max_rays_per_pixel
 
     std::uint64_t total() const { return eye + shadow + reflected + refracted; }
+    /// Counts one ray of the given kind.
+    void count(RayKind kind);
     RayStats& operator+=(const RayStats& other);
 };
 
