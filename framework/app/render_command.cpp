@@ -25,6 +25,7 @@ struct RenderOptions {
     int threads = 0;
     std::optional<int> stage; // default: the highest stage whose labs are all done
     bool stats = false;
+    std::string stats_json; // --stats-json FILE: timings and ray counts for scripts (make bench)
     bool quiet = false;
     bool srgb = false;
 };
@@ -60,6 +61,38 @@ void print_stats(const RenderResult& result) {
                 static_cast<unsigned long long>(s.reflected), static_cast<unsigned long long>(s.refracted),
                 static_cast<unsigned long long>(s.total()));
     std::printf("speed: %.2f million rays per second\n", s.total() / std::max(result.seconds, 1e-9) / 1e6);
+}
+
+struct StatsRecord {
+    const std::string& scene;
+    int width, height;
+    const RenderSettings& settings;
+    const RenderResult& result;
+    double parse_seconds, build_seconds;
+    const Scene& built;
+};
+
+// One JSON object with the render's timings, ray counts and sizes (for scripts).
+bool write_stats_json(const StatsRecord& r, const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "w");
+    if (!file) return false;
+    const RayStats& s = r.result.stats;
+    std::string scene;
+    for (char c : r.scene) {
+        if (c == '"' || c == '\\') scene += '\\';
+        if (static_cast<unsigned char>(c) >= 0x20) scene += c;
+    }
+    std::fprintf(file,
+                 "{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"stage\": %d, \"max_depth\": %d, "
+                 "\"min_weight\": %.17g, \"threads\": %d,\n \"parse_seconds\": %.6f, \"build_seconds\": %.6f, "
+                 "\"render_seconds\": %.6f,\n \"rays\": {\"eye\": %llu, \"shadow\": %llu, \"reflected\": %llu, "
+                 "\"refracted\": %llu, \"total\": %llu},\n \"primitives\": %zu, \"acceleration_bytes\": %zu}\n",
+                 scene.c_str(), r.width, r.height, r.settings.stage, r.settings.max_depth, r.settings.min_weight,
+                 r.result.threads, r.parse_seconds, r.build_seconds, r.result.seconds,
+                 static_cast<unsigned long long>(s.eye), static_cast<unsigned long long>(s.shadow),
+                 static_cast<unsigned long long>(s.reflected), static_cast<unsigned long long>(s.refracted),
+                 static_cast<unsigned long long>(s.total()), r.built.primitives().size(), r.built.acceleration_bytes());
+    return std::fclose(file) == 0;
 }
 
 // Lists the labs that are not done yet, one per line.
@@ -108,7 +141,10 @@ int run_render(const RenderOptions& options) {
     settings.stage = *stage;
     settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);
     settings.min_weight = options.min_weight;
+    const double parse_seconds = seconds_since(load_start);
+    const auto build_start = std::chrono::steady_clock::now();
     const Scene scene(std::move(loaded.data));
+    const double build_seconds = seconds_since(build_start);
     const double load_seconds = seconds_since(load_start);
 
     ProgressBar bar(stderr, !options.quiet && isatty(fileno(stderr)));
@@ -127,6 +163,13 @@ int run_render(const RenderOptions& options) {
                     result.seconds, load_seconds);
     }
     if (options.stats) print_stats(result);
+    if (!options.stats_json.empty()) {
+        StatsRecord record{options.scene, width, height, settings, result, parse_seconds, build_seconds, scene};
+        if (!write_stats_json(record, options.stats_json)) {
+            std::fprintf(stderr, "whitted: cannot write %s\n", options.stats_json.c_str());
+            return 1;
+        }
+    }
     if (result.stats.pixels_cut_short > 0) {
         std::fprintf(stderr,
                      "warning: %llu pixels reached the limit of %u rays per pixel and were cut short; "
@@ -178,6 +221,8 @@ Command add_render_command(CLI::App& app) {
                                "4 reflection, 5 refraction, 6 Fresnel (default: the highest stage whose labs are done)")
         ->check(CLI::Range(1, 6));
     render_command->add_flag("--stats", options->stats, "Print how many rays of each kind were cast, and rays per second");
+    render_command->add_option("--stats-json", options->stats_json,
+                               "Also write the timings (parse, build, render), ray counts and sizes as JSON to FILE");
     render_command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary line");
     render_command->add_flag("--srgb", options->srgb, "Write sRGB-encoded 8-bit values (default: linear, as in the course)");
 

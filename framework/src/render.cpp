@@ -68,6 +68,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, int thre
     pool.clear(); // joins
     if (failure) std::rethrow_exception(failure);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.threads = threads;
     for (const RayStats& s : stats) result.stats += s;
     return result;
 }

@@ -32,6 +32,7 @@ class Bvh {
 
     std::span<const std::uint32_t> order() const { return order_; }
     std::span<const Node> nodes() const { return nodes_; }
+    std::size_t bytes() const { return nodes_.size() * sizeof(Node) + order_.size() * sizeof(std::uint32_t); }
 
     /// Visits the leaves the ray may hit, nearest first, calling
     /// `leaf(first, count, t_max)`; the callback returns the new t_max (smaller

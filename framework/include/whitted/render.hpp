@@ -16,6 +16,7 @@ struct RenderResult {
     Image image;
     RayStats stats;
     double seconds = 0.0;   // wall-clock time of the pixel loop
+    int threads = 1;        // threads that rendered
 };
 
 /// Called now and then from the rendering threads with the fraction of tiles done (0..1).

@@ -43,6 +43,9 @@ class Scene {
     std::span<const Primitive> primitives() const { return data_.primitives; }
     int max_depth() const { return data_.max_depth; }
 
+    /// Bytes held by the acceleration structure (nodes and primitive order).
+    std::size_t acceleration_bytes() const { return bvh_.bytes(); }
+
     /// The material of the surface that was hit.
     const Material& material(const Hit& hit) const { return data_.materials[hit.material]; }
 
