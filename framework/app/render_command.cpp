@@ -3,6 +3,7 @@
 #include "progress.hpp"
 #include "whitted/image_pictures.hpp"
 #include "whitted/lab_status.hpp"
+#include "whitted/leaf_kernels.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
@@ -143,7 +144,7 @@ int run_render(const RenderOptions& options) {
     settings.min_weight = options.min_weight;
     const double parse_seconds = seconds_since(load_start);
     const auto build_start = std::chrono::steady_clock::now();
-    const Scene scene(std::move(loaded.data));
+    const Scene scene(std::move(loaded.data), linked_leaf_kernels());
     const double build_seconds = seconds_since(build_start);
     const double load_seconds = seconds_since(load_start);
 

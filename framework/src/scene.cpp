@@ -12,7 +12,7 @@ namespace {
 // incoming ray, and the mirror direction about it leaves on the ray's side of
 // the true surface. Near silhouettes of coarse meshes neither need hold; there
 // the geometric normal is used.
-void apply_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& normals) {
+void interpolate_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& normals) {
     const double b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
     Vec3 n = b0 * normals[0] + b1 * normals[1] + b2 * normals[2];
     const double length = glm::length(n);
@@ -29,7 +29,7 @@ void apply_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& normals
 
 } // namespace
 
-Scene::Scene(SceneData data) : data_(std::move(data)) {
+Scene::Scene(SceneData data, const LeafKernels* kernels) : data_(std::move(data)), kernels_(kernels) {
     // Bounded primitives go into the BVH, in its order; infinite planes follow.
     std::vector<Primitive> bounded, unbounded;
     std::vector<Aabb> boxes;
@@ -41,16 +41,23 @@ Scene::Scene(SceneData data) : data_(std::move(data)) {
             unbounded.push_back(std::move(primitive));
         }
     }
-    bvh_ = Bvh(boxes);
+    const Bvh binary(boxes);
+    bvh_ = WideBvh(binary);
     bounded_count_ = bounded.size();
     data_.primitives.clear();
     data_.primitives.reserve(bounded.size() + unbounded.size());
-    for (std::uint32_t index : bvh_.order()) data_.primitives.push_back(std::move(bounded[index]));
+    for (std::uint32_t index : binary.order()) data_.primitives.push_back(std::move(bounded[index]));
     for (Primitive& primitive : unbounded) data_.primitives.push_back(std::move(primitive));
     for (std::size_t i = 0; i < data_.primitives.size(); ++i) data_.primitives[i].id = static_cast<std::uint32_t>(i);
 }
 
+void Scene::apply_vertex_normals(Hit& hit, const Ray& ray) const {
+    const Primitive& primitive = data_.primitives[hit.primitive];
+    if (primitive.vertex_normals >= 0) interpolate_vertex_normals(hit, ray, data_.vertex_normals[primitive.vertex_normals]);
+}
+
 std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
+    if (kernels_) return closest_hit_with_kernels(ray, t_range);
     const std::span<const Primitive> all = data_.primitives;
     // Infinite planes first: a plane hit shortens the range the BVH must search.
     std::optional<Hit> nearest = whitted::closest_hit(ray, all.subspan(bounded_count_), t_range);
@@ -62,14 +69,34 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
         }
         return t_max;
     });
-    if (nearest) {
-        const Primitive& primitive = data_.primitives[nearest->primitive];
-        if (primitive.vertex_normals >= 0) apply_vertex_normals(*nearest, ray, data_.vertex_normals[primitive.vertex_normals]);
-    }
+    if (nearest) apply_vertex_normals(*nearest, ray);
     return nearest;
 }
 
+// The same search with the kernels: distances only, then one Hit for the nearest.
+std::optional<Hit> Scene::closest_hit_with_kernels(const Ray& ray, Interval t_range) const {
+    const std::span<const Primitive> all = data_.primitives;
+    const Interval query = t_range;
+    std::optional<std::uint32_t> nearest;
+    if (auto hit = kernels_->closest(ray, all.subspan(bounded_count_), t_range)) {
+        nearest = static_cast<std::uint32_t>(bounded_count_) + hit->index;
+        t_range.max = hit->t;
+    }
+    bvh_.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+        if (auto hit = kernels_->closest(ray, all.subspan(first, count), Interval{t_range.min, t_max})) {
+            nearest = first + hit->index;
+            return hit->t;
+        }
+        return t_max;
+    });
+    if (!nearest) return std::nullopt;
+    std::optional<Hit> hit = intersect(ray, all[*nearest], query);
+    if (hit) apply_vertex_normals(*hit, ray);
+    return hit;
+}
+
 bool Scene::occluded(const Ray& ray, Interval t_range) const {
+    if (kernels_) return occluded_with_kernels(ray, t_range);
     const std::span<const Primitive> all = data_.primitives;
     for (const Primitive& plane : all.subspan(bounded_count_)) {
         if (intersect(ray, plane, t_range)) return true;
@@ -83,6 +110,17 @@ bool Scene::occluded(const Ray& ray, Interval t_range) const {
             }
         }
         return t_max;
+    });
+    return blocked;
+}
+
+bool Scene::occluded_with_kernels(const Ray& ray, Interval t_range) const {
+    const std::span<const Primitive> all = data_.primitives;
+    if (kernels_->any(ray, all.subspan(bounded_count_), t_range)) return true;
+    bool blocked = false;
+    bvh_.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+        blocked = kernels_->any(ray, all.subspan(first, count), Interval{t_range.min, t_max});
+        return blocked ? -1.0 : t_max;
     });
     return blocked;
 }

@@ -6,8 +6,9 @@
 // changes, so any number of threads may query it at the same time.
 #pragma once
 
-#include "whitted/bvh.hpp"
+#include "whitted/wide_bvh.hpp"
 #include "whitted/camera.hpp"
+#include "whitted/leaf_kernels.hpp"
 #include "whitted/material.hpp"
 #include "whitted/primitive.hpp"
 
@@ -34,7 +35,9 @@ struct SceneData {
 class Scene {
   public:
     /// Takes the data and builds the acceleration structure over its primitives.
-    explicit Scene(SceneData data);
+    /// With `kernels` (the reference renderer's), leaves are tested with them
+    /// instead of the labs' code (see leaf_kernels.hpp).
+    explicit Scene(SceneData data, const LeafKernels* kernels = nullptr);
 
     const Camera& camera() const { return data_.camera; }
     const Color& background() const { return data_.background; }
@@ -43,7 +46,7 @@ class Scene {
     std::span<const Primitive> primitives() const { return data_.primitives; }
     int max_depth() const { return data_.max_depth; }
 
-    /// Bytes held by the acceleration structure (nodes and primitive order).
+    /// Bytes held by the acceleration structure.
     std::size_t acceleration_bytes() const { return bvh_.bytes(); }
 
     /// The material of the surface that was hit.
@@ -56,9 +59,14 @@ class Scene {
     bool occluded(const Ray& ray, Interval t_range) const;
 
   private:
+    std::optional<Hit> closest_hit_with_kernels(const Ray& ray, Interval t_range) const;
+    bool occluded_with_kernels(const Ray& ray, Interval t_range) const;
+    void apply_vertex_normals(Hit& hit, const Ray& ray) const;
+
     SceneData data_;             // primitives: the BVH's ones first, in BVH order, then infinite planes
     std::size_t bounded_count_ = 0;
-    Bvh bvh_;
+    WideBvh bvh_;
+    const LeafKernels* kernels_ = nullptr;
 };
 
 } // namespace whitted

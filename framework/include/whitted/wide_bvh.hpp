@@ -1,0 +1,126 @@
+// The BVH the renderer queries: four children per node, boxes in float.
+//
+// Why: box tests are most of a ray's cost (the binary double BVH spent over half
+// of all instructions there). A node holding its four children's boxes side by
+// side lets one 4-wide float test decide them all, and float boxes make a node
+// 128 bytes, two cache lines. Float must never lose a hit the double
+// primitive tests would find, so every box test is conservative: boxes are
+// rounded outward, and each ray widens its slabs by a margin larger than every
+// rounding error of the test (see WideRay). The hits themselves are still found
+// by the primitives' double-precision tests, so images do not change.
+//
+// The tree is collapsed from the binary SAH tree of `Bvh` (whose primitive
+// order it keeps): each node adopts the children of its largest inner children
+// until it has four.
+#pragma once
+
+#include "whitted/bvh.hpp"
+#include "whitted/wide_ray.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace whitted {
+
+class WideBvh {
+  public:
+    static constexpr int kWidth = 4;
+
+    struct alignas(64) Node {
+        float bounds[6][kWidth];         // min x, max x, min y, max y, min z, max z of each child
+        std::uint32_t child[kWidth];     // inner child: node index; leaf: first primitive
+        std::uint16_t count[kWidth];     // leaf: number of primitives; 0 for an inner child or an empty slot
+        std::uint8_t inner_mask = 0;     // bit i set: child i is an inner node
+    };
+
+    WideBvh() = default;
+
+    /// Collapses the binary tree into four-wide nodes (same primitive order).
+    explicit WideBvh(const Bvh& binary);
+
+    std::span<const Node> nodes() const { return nodes_; }
+    /// The largest absolute coordinate of any box: the scale of WideRay's margins.
+    double extent() const { return extent_; }
+    /// Bytes of the nodes.
+    std::size_t bytes() const { return nodes_.size() * sizeof(Node); }
+    /// True when the whole tree is one leaf (or empty); then `root_leaf` gives its range.
+    bool root_is_leaf() const { return nodes_.empty(); }
+
+    /// Visits the leaves whose boxes the ray meets within (t_min, t_max), nearer
+    /// boxes first, calling `leaf(first, count, t_max)`; the callback returns the
+    /// new t_max (smaller after a hit) or a negative number to stop.
+    template <class LeafFn>
+    void traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf) const;
+
+  private:
+    std::vector<Node> nodes_;
+    std::uint32_t root_count_ = 0; // primitives when the root is a leaf (nodes_ empty)
+    double extent_ = 0.0;
+};
+
+template <class LeafFn>
+void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf) const {
+    if (nodes_.empty()) {
+        if (root_count_ > 0) leaf(0u, root_count_, t_max);
+        return;
+    }
+    const WideRay wide(ray, extent_, t_min, t_max);
+    // A reference to a child: an inner node's index, or a leaf's first primitive and count.
+    struct Entry {
+        std::uint64_t ref;
+        float t_entry;
+    };
+    constexpr std::uint64_t kLeaf = std::uint64_t{1} << 63;
+    auto child_ref = [](const Node& node, int i) -> std::uint64_t {
+        return (node.inner_mask >> i & 1u) ? node.child[i]
+                                           : kLeaf | std::uint64_t{node.count[i]} << 32 | node.child[i];
+    };
+    Entry stack[256]; // 64 binary levels at most: at most 3 pending siblings per wide level
+    int top = 0;
+    std::uint64_t current = 0;
+    for (;;) {
+        // Descend through inner nodes, nearest child first, pushing the others.
+        while (!(current & kLeaf)) {
+            const Node& node = nodes_[current];
+            float t_entry[kWidth];
+            unsigned mask = wide.hit_boxes(node.bounds, t_entry);
+            if (mask == 0) goto pop;
+            int first = __builtin_ctz(mask);
+            mask &= mask - 1;
+            if (mask == 0) {
+                current = child_ref(node, first);
+                continue;
+            }
+            // Push every hit child, then bubble the nearer ones towards the top.
+            const int base = top;
+            stack[top++] = {child_ref(node, first), t_entry[first]};
+            for (; mask != 0; mask &= mask - 1) {
+                const int i = __builtin_ctz(mask);
+                stack[top] = {child_ref(node, i), t_entry[i]};
+                for (int k = top; k > base && stack[k].t_entry > stack[k - 1].t_entry; --k) std::swap(stack[k], stack[k - 1]);
+                ++top;
+            }
+            current = stack[--top].ref;
+        }
+        {
+            const double new_t_max = leaf(static_cast<std::uint32_t>(current), static_cast<std::uint32_t>(current >> 32) & 0xffffu, t_max);
+            if (new_t_max < 0.0) return;
+            if (new_t_max < t_max) {
+                t_max = new_t_max;
+                wide.shrink(t_max);
+            }
+        }
+    pop:
+        for (;;) {
+            if (top == 0) return;
+            const Entry& entry = stack[--top];
+            if (entry.t_entry <= wide.t_max()) {
+                current = entry.ref;
+                break;
+            }
+        }
+    }
+}
+
+} // namespace whitted

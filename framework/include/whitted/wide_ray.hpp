@@ -1,0 +1,110 @@
+// A ray prepared for testing four float boxes at once, conservatively.
+//
+// Why: the wide BVH stores boxes in float and tests four per instruction, but a
+// box test that rounds the wrong way would lose a hit the exact test finds: a
+// hole in the image. So the test is made to err only towards "hit": each
+// slab's entry distance is computed from an origin moved forward by a margin
+// `m` and each exit distance from an origin moved back by `m`. Every rounding
+// error of the computation (the origin, direction and bounds in float, the
+// subtraction, the reciprocal, the product) is below 2^-22 (|origin| + extent)
+// in position, times |1/d| in t; the margin 2^-20 (|origin| + extent) covers it
+// four times over. A box may then be visited that the exact test would skip;
+// that costs a little time and never changes a hit. Direction components of 0
+// become tiny ones of the same sign, so no 0 × infinity (NaN) ever appears.
+#pragma once
+
+#include "whitted/ray.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace whitted {
+
+class WideRay {
+  public:
+    /// Prepares `ray` for boxes whose coordinates are at most `extent` in absolute value.
+    WideRay(const Ray& ray, double extent, double t_min, double t_max) {
+        const double largest = std::max({std::abs(ray.direction.x), std::abs(ray.direction.y),
+                                         std::abs(ray.direction.z), 1e-300});
+        const double origin_size = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z)});
+        const double margin = 0x1p-20 * (origin_size + extent) + 1e-30;
+        for (int axis = 0; axis < 3; ++axis) {
+            double d = ray.direction[axis];
+            if (std::abs(d) < largest * 0x1p-60) d = std::copysign(largest * 0x1p-60, d);
+            const bool negative = d < 0.0;
+            const double inv = 1.0 / d;
+            // Entry: origin moved along the ray by the margin; exit: moved back.
+            const double shift = negative ? -margin : margin;
+            inv_[axis] = static_cast<float>(std::clamp(inv, -1e30, 1e30)); // only degenerate rays reach the clamp
+            origin_entry_[axis] = static_cast<float>(ray.origin[axis] + shift);
+            origin_exit_[axis] = static_cast<float>(ray.origin[axis] - shift);
+            near_[axis] = 2 * axis + (negative ? 1 : 0);
+            far_[axis] = 2 * axis + (negative ? 0 : 1);
+        }
+        t_min_ = round_down(t_min);
+        t_max_ = round_up(t_max);
+    }
+
+    float t_min() const { return t_min_; }
+    float t_max() const { return t_max_; }
+    /// Lowers the far end of the range after a hit at t.
+    void shrink(double t) const { t_max_ = round_up(t); }
+
+    /// Tests four boxes (bounds[6][4] as in WideBvh::Node); returns a bit per box
+    /// the ray may meet within its range, and each box's entry distance.
+    unsigned hit_boxes(const float (&bounds)[6][4], float (&t_entry)[4]) const {
+#if defined(__SSE2__)
+        __m128 entry = _mm_set1_ps(t_min_);
+        __m128 exit = _mm_set1_ps(t_max_);
+        for (int axis = 0; axis < 3; ++axis) {
+            const __m128 inv = _mm_set1_ps(inv_[axis]);
+            const __m128 t_near = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[near_[axis]]), _mm_set1_ps(origin_entry_[axis])), inv);
+            const __m128 t_far = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[far_[axis]]), _mm_set1_ps(origin_exit_[axis])), inv);
+            entry = _mm_max_ps(entry, t_near);
+            exit = _mm_min_ps(exit, t_far);
+        }
+        _mm_storeu_ps(t_entry, entry);
+        return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(entry, exit)));
+#else
+        unsigned mask = 0;
+        for (int i = 0; i < 4; ++i) {
+            float entry = t_min_, exit = t_max_;
+            for (int axis = 0; axis < 3; ++axis) {
+                entry = std::max(entry, (bounds[near_[axis]][i] - origin_entry_[axis]) * inv_[axis]);
+                exit = std::min(exit, (bounds[far_[axis]][i] - origin_exit_[axis]) * inv_[axis]);
+            }
+            t_entry[i] = entry;
+            if (entry <= exit) mask |= 1u << i;
+        }
+        return mask;
+#endif
+    }
+
+  private:
+    static float round_down(double t) {
+        if (t < -std::numeric_limits<float>::max()) return -std::numeric_limits<float>::infinity();
+        if (t > std::numeric_limits<float>::max()) return std::numeric_limits<float>::max();
+        const float f = static_cast<float>(t);
+        return static_cast<double>(f) > t ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    }
+    static float round_up(double t) {
+        if (t > std::numeric_limits<float>::max()) return std::numeric_limits<float>::infinity();
+        if (t < -std::numeric_limits<float>::max()) return -std::numeric_limits<float>::max();
+        const float f = static_cast<float>(t);
+        return static_cast<double>(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    }
+
+    float inv_[3];
+    float origin_entry_[3];
+    float origin_exit_[3];
+    int near_[3], far_[3];
+    float t_min_;
+    mutable float t_max_;
+};
+
+} // namespace whitted

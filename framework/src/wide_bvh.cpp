@@ -1,0 +1,97 @@
+// Collapsing the binary SAH tree into four-wide nodes with float boxes.
+#include "whitted/wide_bvh.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace whitted {
+namespace {
+
+constexpr float kInfinityF = std::numeric_limits<float>::infinity();
+
+// Double to float, never upwards (for a box's minimum) or never downwards (its maximum).
+float float_below(double x) {
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? std::nextafter(f, -kInfinityF) : f;
+}
+float float_above(double x) {
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::nextafter(f, kInfinityF) : f;
+}
+
+struct Collapser {
+    std::span<const Bvh::Node> binary;
+    std::vector<WideBvh::Node>& nodes;
+
+    std::uint32_t left(std::uint32_t b) const { return b + 1; }
+    std::uint32_t right(std::uint32_t b) const { return binary[b].first; }
+    bool is_leaf(std::uint32_t b) const { return binary[b].count > 0; }
+
+    // Makes the wide node for binary inner node b and returns its index.
+    std::uint32_t collapse(std::uint32_t b) {
+        std::uint32_t children[WideBvh::kWidth] = {left(b), right(b)};
+        int count = 2;
+        // Open the inner child with the largest surface until there are four.
+        while (count < WideBvh::kWidth) {
+            int largest = -1;
+            for (int i = 0; i < count; ++i) {
+                if (is_leaf(children[i])) continue;
+                if (largest < 0 || binary[children[i]].bounds.half_area() > binary[children[largest]].bounds.half_area())
+                    largest = i;
+            }
+            if (largest < 0) break;
+            const std::uint32_t opened = children[largest];
+            children[largest] = left(opened);
+            children[count++] = right(opened);
+        }
+        const auto index = static_cast<std::uint32_t>(nodes.size());
+        nodes.emplace_back();
+        for (int i = 0; i < WideBvh::kWidth; ++i) {
+            WideBvh::Node& node = nodes[index];
+            if (i >= count) {
+                // An empty slot: an inverted infinite box, which no ray meets in either direction.
+                for (int axis = 0; axis < 3; ++axis) {
+                    node.bounds[2 * axis][i] = kInfinityF;
+                    node.bounds[2 * axis + 1][i] = -kInfinityF;
+                }
+                node.child[i] = 0;
+                node.count[i] = 0;
+                continue;
+            }
+            const Bvh::Node& child = binary[children[i]];
+            for (int axis = 0; axis < 3; ++axis) {
+                node.bounds[2 * axis][i] = float_below(child.bounds.min[axis]);
+                node.bounds[2 * axis + 1][i] = float_above(child.bounds.max[axis]);
+            }
+            if (child.count > 0) {
+                node.child[i] = child.first;
+                node.count[i] = child.count;
+            } else {
+                node.count[i] = 0;
+                node.inner_mask |= static_cast<std::uint8_t>(1u << i);
+                const std::uint32_t grandchild = collapse(children[i]); // may reallocate `nodes`
+                nodes[index].child[i] = grandchild;
+            }
+        }
+        return index;
+    }
+};
+
+} // namespace
+
+WideBvh::WideBvh(const Bvh& binary) {
+    const std::span<const Bvh::Node> tree = binary.nodes();
+    if (tree.empty()) return;
+    const Aabb& root = tree[0].bounds;
+    for (int axis = 0; axis < 3; ++axis)
+        extent_ = std::max({extent_, std::abs(root.min[axis]), std::abs(root.max[axis])});
+    if (tree[0].count > 0) {
+        root_count_ = tree[0].count;
+        return;
+    }
+    nodes_.reserve(tree.size() / 2 + 1);
+    Collapser{tree, nodes_}.collapse(0);
+    nodes_.shrink_to_fit();
+}
+
+} // namespace whitted

@@ -1,0 +1,118 @@
+// The reference renderer's fast path (float four-wide BVH, distance-only leaf
+// kernels) must answer exactly as the labs' code testing every primitive does,
+// and render the very same image, bit for bit.
+#include "whitted/labs.hpp"
+#include "whitted/leaf_kernels.hpp"
+#include "whitted/render.hpp"
+#include "whitted/scene_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <random>
+
+using namespace whitted;
+
+namespace {
+
+// Random spheres, triangles (some flat in an axis plane: boxes of zero
+// thickness), boxes and a plane, all moved by `offset`, so that far-away
+// coordinates stress the float boxes' rounding.
+SceneData random_scene(unsigned seed, int count, Vec3 offset, double scale) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> position(-10.0, 10.0), size(0.05, 1.5);
+    SceneData data;
+    data.materials.push_back(Material{});
+    for (int i = 0; i < count; ++i) {
+        const Point3 c = offset + scale * Point3(position(rng), position(rng), position(rng));
+        const double a = scale * size(rng), b = scale * size(rng), h = scale * size(rng);
+        switch (i % 4) {
+        case 0: data.primitives.push_back({Sphere{c, a}}); break;
+        case 1: data.primitives.push_back({Triangle{c, c + Vec3(a, 0.0, h), c + Vec3(0.0, b, h)}}); break;
+        case 2: data.primitives.push_back({Triangle{c, c + Vec3(a, 0.0, 0.0), c + Vec3(0.0, b, 0.0)}}); break;
+        default: data.primitives.push_back({Box{c, c + Vec3(a, b, h)}}); break;
+        }
+    }
+    data.primitives.push_back({Plane{offset + Point3(0.0, -12.0 * scale, 0.0), Vec3(0.0, 1.0, 0.0)}});
+    return data;
+}
+
+// Rays from anywhere around the cloud; one in three has a zero direction
+// component and one in five runs exactly along an axis.
+Ray random_ray(std::mt19937& rng, Vec3 offset, double scale) {
+    std::uniform_real_distribution<double> position(-15.0, 15.0), unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> pick(0, 14);
+    Vec3 d;
+    do d = Vec3(unit(rng), unit(rng), unit(rng));
+    while (glm::length(d) < 0.1);
+    const int kind = pick(rng);
+    if (kind % 3 == 0) d[kind % 2] = 0.0;
+    if (kind % 5 == 0) d = Vec3(0.0), d[kind % 3] = kind > 7 ? 1.0 : -1.0;
+    return Ray{offset + scale * Point3(position(rng), position(rng), position(rng)), glm::normalize(d)};
+}
+
+struct Setting {
+    const char* name;
+    Vec3 offset;
+    double scale;
+};
+
+class FastPath : public ::testing::TestWithParam<Setting> {};
+
+} // namespace
+
+TEST_P(FastPath, ClosestHitAndOcclusionAgreeWithTestingEveryPrimitive) {
+    const Setting setting = GetParam();
+    const Scene labs(random_scene(3, 2000, setting.offset, setting.scale));
+    const Scene fast(random_scene(3, 2000, setting.offset, setting.scale), linked_leaf_kernels());
+    ASSERT_NE(linked_leaf_kernels(), nullptr);
+    std::mt19937 rng(5);
+    int hits = 0, blocked = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Ray ray = random_ray(rng, setting.offset, setting.scale);
+        const auto expected = closest_hit(ray, labs.primitives(), Interval{});
+        for (const Scene* scene : {&labs, &fast}) {
+            const auto found = scene->closest_hit(ray);
+            ASSERT_EQ(expected.has_value(), found.has_value()) << "ray " << i << (scene == &fast ? " (kernels)" : "");
+            if (!expected) continue;
+            EXPECT_EQ(expected->t, found->t) << "ray " << i;
+            EXPECT_EQ(expected->primitive, found->primitive) << "ray " << i;
+            EXPECT_EQ(expected->normal, found->normal) << "ray " << i;
+        }
+        hits += expected.has_value();
+        const Interval shadow_range{0.0, 6.0 * setting.scale};
+        const bool expected_blocked = closest_hit(ray, labs.primitives(), shadow_range).has_value();
+        ASSERT_EQ(expected_blocked, labs.occluded(ray, shadow_range)) << "ray " << i;
+        ASSERT_EQ(expected_blocked, fast.occluded(ray, shadow_range)) << "ray " << i << " (kernels)";
+        blocked += expected_blocked;
+    }
+    EXPECT_GT(hits, 700);    // the comparison means something only if many rays hit
+    EXPECT_GT(blocked, 150); // ... and many, but not all, feelers are blocked
+    EXPECT_LT(blocked, 2850);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, FastPath,
+                         ::testing::Values(Setting{"unit", Vec3(0.0), 1.0},
+                                           Setting{"far_away", Vec3(3e6, -2e6, 1e6), 1.0},
+                                           Setting{"tiny", Vec3(1e-3), 1e-5},
+                                           Setting{"huge", Vec3(0.0), 1e9}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(FastPath, RendersTheSameImageAsTheLabsForEveryShippedScene) {
+    // Every shape kind appears in these: spheres (inward too), planes, triangles, boxes, cones.
+    std::vector<std::filesystem::path> files;
+    for (const char* folder : {WHITTED_SOURCE_DIR "/scenes", WHITTED_SOURCE_DIR "/tests/hidden/scenes"})
+        for (const auto& entry : std::filesystem::directory_iterator(folder)) files.push_back(entry.path());
+    ASSERT_GE(files.size(), 8u);
+    for (const auto& file : files) {
+        LoadedScene loaded = load_scene(file.string());
+        loaded.data.camera = loaded.data.camera.with_resolution(48, 36);
+        const RenderSettings settings;
+        const Scene labs(loaded.data);
+        const Scene fast(loaded.data, linked_leaf_kernels());
+        const Image a = render(labs, settings, 2).image;
+        const Image b = render(fast, settings, 2).image;
+        EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color))) << file;
+    }
+}
