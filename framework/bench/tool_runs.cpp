@@ -6,18 +6,21 @@
 namespace whitted::bench {
 namespace {
 
-// The first line of the program's output with text, shortened: the likely reason it failed.
+// The first line of the program's output with text (and the next one when it ends
+// with a colon), shortened: the likely reason it failed.
 std::string first_line(const std::string& output) {
+    std::string line;
     std::size_t start = 0;
-    while (start < output.size()) {
+    while (start < output.size() && (line.empty() || line.back() == ':')) {
         const std::size_t end = std::min(output.find_first_of("\r\n", start), output.size());
-        if (output.find_first_not_of(" \t", start) < end) {
-            const std::string line = output.substr(start, end - start);
-            return line.size() > 200 ? line.substr(0, 200) + "..." : line;
+        const std::size_t text = output.find_first_not_of(" \t", start);
+        if (text < end) {
+            if (!line.empty()) line += ' ';
+            line.append(output, text, end - text);
         }
         start = end + 1;
     }
-    return {};
+    return line.size() > 240 ? line.substr(0, 240) + "..." : line;
 }
 
 } // namespace
