@@ -22,24 +22,14 @@ double value_of(const Sample& sample, Metric metric) {
 
 } // namespace
 
-std::string_view tool_label(Tool tool) {
-    switch (tool) {
-    case Tool::whitted: return "whitted";
-    case Tool::povray: return "POV-Ray";
-    case Tool::embree: return "Embree";
-    case Tool::student: return "student";
-    }
-    return "?";
-}
-
-std::string_view tool_key(Tool tool) {
-    switch (tool) {
-    case Tool::whitted: return "whitted";
-    case Tool::povray: return "povray";
-    case Tool::embree: return "embree";
-    case Tool::student: return "student";
-    }
-    return "?";
+const ToolStyle& style(Tool tool) {
+    static constexpr std::array<ToolStyle, kTools.size()> kStyles{{
+        {"whitted", "whitted", "whitted render", "#2b6cb0"},
+        {"POV-Ray", "povray", "POV-Ray trace", "#dd6b20"},
+        {"Embree", "embree", "Embree (rays only)", "#38a169"},
+        {"student", "student", "student build render", "#805ad5"},
+    }};
+    return kStyles[static_cast<std::size_t>(tool)];
 }
 
 Summary summarize(std::vector<double> values) {

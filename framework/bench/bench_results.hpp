@@ -30,11 +30,22 @@ struct Sample {
 enum class Tool { whitted, povray, embree, student };
 inline constexpr std::array<Tool, 4> kTools{Tool::whitted, Tool::povray, Tool::embree, Tool::student};
 
+/// How the reports name and draw a program.
+struct ToolStyle {
+    std::string_view label;  // in tables and messages: "POV-Ray"
+    std::string_view key;    // in results.json and file names: "povray"
+    std::string_view legend; // in the chart: "POV-Ray trace"
+    std::string_view colour; // of its bars: "#dd6b20"
+};
+
+/// The names and colour of `tool`.
+const ToolStyle& style(Tool tool);
+
 /// The name a report shows: "whitted", "POV-Ray", "Embree", "student".
-std::string_view tool_label(Tool tool);
+inline std::string_view tool_label(Tool tool) { return style(tool).label; }
 
 /// The key in results.json: "whitted", "povray", "embree", "student".
-std::string_view tool_key(Tool tool);
+inline std::string_view tool_key(Tool tool) { return style(tool).key; }
 
 /// Every run of one program on one scene.
 struct Series {

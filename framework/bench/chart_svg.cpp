@@ -18,26 +18,6 @@ namespace {
 constexpr double kWidth = 960, kLeft = 150, kRight = 100, kTop = 96, kBottom = 64;
 constexpr double kBar = 18, kBarGap = 4, kGroupGap = 20;
 
-const char* colour(Tool tool) {
-    switch (tool) {
-    case Tool::whitted: return "#2b6cb0";
-    case Tool::povray: return "#dd6b20";
-    case Tool::embree: return "#38a169";
-    case Tool::student: return "#805ad5";
-    }
-    return "#000";
-}
-
-std::string legend_label(Tool tool) {
-    switch (tool) {
-    case Tool::whitted: return "whitted render";
-    case Tool::povray: return "POV-Ray trace";
-    case Tool::embree: return "Embree (rays only)";
-    case Tool::student: return "student build render";
-    }
-    return "";
-}
-
 std::string escaped(const std::string& text) {
     std::string out;
     for (char c : text) out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : std::string(1, c);
@@ -107,9 +87,10 @@ std::string svg_chart(const std::vector<SceneResult>& results, const BenchSettin
     svg += text_at(kLeft, 44, escaped(settings_line(settings)), "fill=\"#444\"");
     double legend_x = kLeft;
     for (Tool tool : tools) {
-        svg += "<rect x=\"" + px(legend_x) + "\" y=\"58\" width=\"14\" height=\"14\" fill=\"" + colour(tool) + "\"/>\n";
-        svg += text_at(legend_x + 20, 70, legend_label(tool));
-        legend_x += 40 + 7.0 * legend_label(tool).size();
+        const std::string legend(style(tool).legend), colour(style(tool).colour);
+        svg += "<rect x=\"" + px(legend_x) + "\" y=\"58\" width=\"14\" height=\"14\" fill=\"" + colour + "\"/>\n";
+        svg += text_at(legend_x + 20, 70, legend);
+        legend_x += 40 + 7.0 * legend.size();
     }
     svg += grid(axis, kTop - 8, plot_bottom - kGroupGap + 8);
     for (std::size_t i = 0; i < results.size(); ++i) {
@@ -127,7 +108,8 @@ std::string svg_chart(const std::vector<SceneResult>& results, const BenchSettin
             const double seconds = median_render(r, tools[k]);
             const double end = std::max(kLeft + 1.0, axis.x(seconds));
             svg += "<rect x=\"" + px(kLeft) + "\" y=\"" + px(y) + "\" width=\"" + px(end - kLeft) + "\" height=\"" +
-                   px(kBar) + "\" fill=\"" + colour(tools[k]) + "\"><title>" + std::string(tool_label(tools[k])) + " on " +
+                   px(kBar) + "\" fill=\"" + std::string(style(tools[k]).colour) + "\"><title>" +
+                   std::string(tool_label(tools[k])) + " on " +
                    escaped(r.name) + ": " + format_seconds(seconds) + " s</title></rect>\n";
             svg += text_at(end + 5, y + 13, format_seconds(seconds) + " s");
         }
