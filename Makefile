@@ -3,19 +3,25 @@
 #   make test     the same set-up, then every test through CTest
 #   make handout OUT=dir, make proofs, make references: for instructors
 #   make test-grader  end-to-end check of `whitted grade` (CI, after make test)
+#   make bench    time whitted against POV-Ray and Embree (docs/instructors.md, "Benchmark")
 MAKEFLAGS += --no-print-directory
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 SCENE ?= scenes/whitted_1980.p3f
 OUT ?= whitted_1980.png
 SIZE ?= 512
+# make bench: generated sphereflake levels, scene files, extra whitted-bench flags.
+SPD_DIR ?= ../shared/scenes/spd
+BENCH_FLAKES ?= 4,5,6
+BENCH_SCENES ?= $(wildcard $(SPD_DIR)/teapot6.nff $(SPD_DIR)/mount6.nff $(SPD_DIR)/tetra6.nff)
+BENCH_ARGS ?=
 
-.PHONY: all deps configure build render test test-grader references handout proofs clean
+.PHONY: all deps configure build render test bench test-grader references handout proofs clean
 
 all: build
 
 deps:
-	@bash scripts/install-deps.sh
+	@bash scripts/install-deps.sh $(DEPS_ARGS)
 
 configure: deps
 	@test -f $(BUILD_DIR)/CMakeCache.txt || cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release
@@ -25,6 +31,15 @@ build: configure
 
 render: build
 	@./$(BUILD_DIR)/whitted render $(SCENE) -o $(OUT) --width $(SIZE) --height $(SIZE)
+
+# The benchmark of issue 4; it also installs POV-Ray and Embree 3 when it can.
+# Configuring again finds Embree when it has just been installed.
+bench: DEPS_ARGS = --bench
+bench: configure
+	@cmake -S . -B $(BUILD_DIR) > /dev/null
+	@grep -q '^CMAKE_BUILD_TYPE:STRING=Release$$' $(BUILD_DIR)/CMakeCache.txt || echo "warning: $(BUILD_DIR) is not a Release build: the times say little"
+	@cmake --build $(BUILD_DIR) -j$(JOBS) --target whitted-bench
+	@./$(BUILD_DIR)/whitted-bench --flake $(BENCH_FLAKES) $(BENCH_SCENES) $(BENCH_ARGS)
 
 # With the reference solution (the instructor's tree): every test, plainly.
 # Without it (the student handout): every test, then each lab's progress.

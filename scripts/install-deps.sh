@@ -2,33 +2,52 @@
 # Installs the Debian/Ubuntu packages the framework needs, if any are missing.
 # As root it runs apt-get; with password-less sudo it uses sudo; otherwise it
 # prints the exact command to run and stops with an error.
+#
+# With --bench it also installs what `make bench` compares against (POV-Ray and
+# Embree 3). Those are optional: when they cannot be installed, it says so and
+# succeeds, and the benchmark skips the comparisons.
 set -euo pipefail
 
 packages=(g++ make cmake pkg-config libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev)
+optional=()
+case "${1:-}" in
+    "") ;;
+    --bench) optional=(povray libembree-dev) ;;
+    *) echo "usage: scripts/install-deps.sh [--bench]" >&2; exit 2 ;;
+esac
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
-    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json)" >&2
+    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json)${optional[*]:+; for make bench: ${optional[*]}}" >&2
     exit 0
 fi
 
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 missing=()
+required_missing=0
 for package in "${packages[@]}"; do
-    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
-        missing+=("$package")
-    fi
+    installed "$package" || { missing+=("$package"); required_missing=1; }
+done
+for package in ${optional[@]+"${optional[@]}"}; do
+    installed "$package" || missing+=("$package")
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
+
+# Only optional packages missing: a failure to install them is a warning.
+optional_only() {
+    [ $required_missing -eq 0 ] || exit 1
+    echo "install-deps: make bench will skip the comparisons that need ${missing[*]}; to add them: sudo apt-get install -y ${missing[*]}" >&2
+    exit 0
+}
 
 export DEBIAN_FRONTEND=noninteractive
 if [ "$(id -u)" -eq 0 ]; then
     echo "install-deps: installing ${missing[*]}"
-    apt-get update -qq
-    apt-get install -y -qq --no-install-recommends "${missing[@]}"
+    { apt-get update -qq && apt-get install -y -qq --no-install-recommends "${missing[@]}"; } || optional_only
 elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
     echo "install-deps: installing ${missing[*]} with sudo"
-    sudo -E apt-get update -qq
-    sudo -E apt-get install -y -qq --no-install-recommends "${missing[@]}"
+    { sudo -E apt-get update -qq && sudo -E apt-get install -y -qq --no-install-recommends "${missing[@]}"; } || optional_only
 else
+    [ $required_missing -eq 0 ] && optional_only
     echo "install-deps: missing packages. Run this, then try again:" >&2
     echo "    sudo apt-get install -y ${missing[*]}" >&2
     exit 1

@@ -19,6 +19,9 @@ Command add_render_command(CLI::App& app);
 /// `whitted diff A B [-o DIFF]`
 Command add_diff_command(CLI::App& app);
 
+/// `whitted generate KIND [--level N] [-o FILE]`
+Command add_generate_command(CLI::App& app);
+
 /// `whitted grade SUBMISSION ...` (instructors)
 Command add_grade_command(CLI::App& app);
 

@@ -1,5 +1,5 @@
 // A program that misbehaves on request, for the process runner's tests:
-//   misbehaving_child exit N | segfault | abort | loop | sleep | allocate | big-file | spew MB | env NAME | orphan
+//   misbehaving_child exit N | segfault | abort | loop | sleep | allocate | touch MB | big-file | spew MB | env NAME | orphan
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -32,6 +32,11 @@ int main(int argc, char** argv) {
             std::memset(block, 1, 64 << 20);
             blocks.push_back(block);
         }
+    }
+    if (mode == "touch") { // uses MB megabytes of memory, then exits
+        std::vector<char> block(static_cast<std::size_t>(std::atol(argument.c_str())) << 20);
+        std::memset(block.data(), 1, block.size());
+        return block[block.size() / 2] == 1 ? 0 : 1;
     }
     if (mode == "big-file") {
         std::ofstream out("big.bin", std::ios::binary);

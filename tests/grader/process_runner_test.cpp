@@ -111,6 +111,13 @@ TEST(ProcessRunner, ChildrenLeftBehindAreKilledWithTheGroup) {
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0.9);
 }
 
+TEST(ProcessRunner, PeakMemoryOfTheChildIsMeasured) {
+    const ProcessRun run = run_child({"touch", "64"});
+    EXPECT_EQ(run.end, ProcessRun::End::exited);
+    EXPECT_GE(run.peak_rss_bytes, std::size_t{64} << 20);
+    EXPECT_LT(run.peak_rss_bytes, std::size_t{128} << 20);
+}
+
 TEST(ProcessRunner, MissingProgramFailsToStart) {
     const ProcessRun run = run_process({{"/no/such/program"}, {}, {}, {}});
     EXPECT_EQ(run.end, ProcessRun::End::failed_to_start);

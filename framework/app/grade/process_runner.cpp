@@ -115,6 +115,7 @@ ProcessRun run_process(const ProcessSpec& spec) {
     int output_fd = output[0];
     bool reaped = false, timed_out = false;
     int wait_status = 0;
+    rusage usage{};
     char buffer[65536];
     while (output_fd >= 0 || !reaped) {
         const Clock::time_point now = Clock::now();
@@ -126,8 +127,9 @@ ProcessRun run_process(const ProcessSpec& spec) {
             close(output_fd); // a process that left the group still holds the output open: stop listening
             output_fd = -1;
         }
-        if (!reaped && waitpid(pid, &wait_status, WNOHANG) == pid) {
+        if (!reaped && wait4(pid, &wait_status, WNOHANG, &usage) == pid) {
             reaped = true;
+            run.peak_rss_bytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024; // Linux counts kilobytes
             kill(-pid, SIGKILL); // whatever it left behind still holds the output open
         }
         if (output_fd < 0) {

@@ -41,6 +41,7 @@ struct ProcessRun {
     std::string output; // stdout and stderr interleaved, at most limits.output_bytes
     bool output_truncated = false;
     double seconds = 0.0; // wall clock
+    std::size_t peak_rss_bytes = 0; // the child's peak resident memory (wait4's ru_maxrss), once reaped
     std::string start_error; // for End::failed_to_start
 };
 

@@ -1,0 +1,97 @@
+// whitted-bench's reports from made-up results: the table's cells, ratios and
+// gaps, the scale section, the targets, the SVG chart and results.json.
+#include "reports.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+using namespace whitted::bench;
+
+namespace {
+
+Series series(std::vector<double> render_seconds, std::uint64_t rays = 0, std::size_t primitives = 0,
+              std::size_t bytes = 0) {
+    Series s;
+    s.attempted = true;
+    for (double seconds : render_seconds) s.samples.push_back({0.001, seconds, rays, 20.0});
+    s.primitives = primitives;
+    s.acceleration_bytes = bytes;
+    return s;
+}
+
+SceneResult flake(int level, double whitted, double povray, double embree) {
+    SceneResult r;
+    r.name = "flake" + std::to_string(level);
+    r.generator = "sphereflake";
+    r.level = level;
+    const std::size_t n = level == 4 ? 7383 : 66432;
+    r.of(Tool::whitted) = series({whitted, whitted * 1.1, whitted * 0.9}, 1'500'000, n, n * 48);
+    r.of(Tool::povray) = series({povray});
+    r.of(Tool::embree) = series({embree}, 1'490'000, n);
+    return r;
+}
+
+std::vector<SceneResult> sample_results() {
+    std::vector<SceneResult> results{flake(4, 0.08, 0.48, 0.086), flake(5, 0.1, 0.6, 0.1)};
+    SceneResult teapot;
+    teapot.name = "teapot6";
+    teapot.of(Tool::whitted) = series({0.05}, 900'000, 2330, 90'000);
+    teapot.of(Tool::embree).attempted = true;
+    teapot.of(Tool::embree).failure = "Embree on teapot6 exited with code 3";
+    results.push_back(teapot);
+    return results;
+}
+
+} // namespace
+
+TEST(BenchReports, TableShowsMediansRangesRatiosAndGaps) {
+    const std::string table = results_table(sample_results());
+    EXPECT_NE(table.find("| flake4 | 7,383 | 0.00100 | 0.0800 (0.0720–0.0880) |"), std::string::npos) << table;
+    EXPECT_NE(table.find("| 0.480 | 0.17× | 0.0860 | 0.93× | 1,500,000 | 1,490,000 |"), std::string::npos) << table;
+    // teapot6: no POV-Ray run leaves its cells empty; the failed Embree says so.
+    EXPECT_NE(table.find("| teapot6 (failed) | 2,330 |"), std::string::npos) << table;
+    EXPECT_NE(table.find("|  |  | failed | – | 900,000 | failed |"), std::string::npos) << table;
+}
+
+TEST(BenchReports, ReportListsFailuresScaleAndTargets) {
+    const std::string report = markdown_report(sample_results(), BenchSettings{});
+    EXPECT_NE(report.find("- Embree on teapot6 exited with code 3"), std::string::npos);
+    EXPECT_NE(report.find("## Scale"), std::string::npos);
+    EXPECT_NE(report.find("| flake4 | whitted render ÷ POV-Ray trace | 0.17× | ≤ 0.20× | yes |"), std::string::npos) << report;
+    EXPECT_NE(report.find("| teapot6 | whitted render | 0.0500 s | ≤ 0.0450 s | **no** |"), std::string::npos) << report;
+}
+
+TEST(BenchReports, ScaleComparesRenderGrowthWithLogGrowth) {
+    const std::string scale = scale_table(sample_results());
+    EXPECT_NE(scale.find("| 4 | 7,383 |"), std::string::npos) << scale;
+    EXPECT_NE(scale.find("| 1.25× | 1.25× | 1.00 | 48 |"), std::string::npos) << scale; // ln 66432 / ln 7383 = 1.246
+    EXPECT_EQ(scale_table({flake(4, 0.08, 0.48, 0.086)}), "");
+}
+
+TEST(BenchReports, TargetsAreOnlyCheckedAtTheirSettings) {
+    EXPECT_FALSE(check_targets(sample_results(), BenchSettings{}).empty());
+    BenchSettings small;
+    small.size = 64;
+    EXPECT_TRUE(check_targets(sample_results(), small).empty());
+}
+
+TEST(BenchReports, ChartIsAnSvgWithLegendBarsAndValues) {
+    const std::string svg = svg_chart(sample_results(), BenchSettings{});
+    EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
+    for (const char* text : {"whitted render", "POV-Ray trace", "Embree (rays only)", "0.0800 s", "0.480 s", ">skipped<",
+                             ">failed<", "seconds per image (log scale)", ">0.1<", "</svg>"})
+        EXPECT_NE(svg.find(text), std::string::npos) << text;
+    EXPECT_NE(terminal_chart(sample_results()).find("POV-Ray  ███"), std::string::npos);
+}
+
+TEST(BenchReports, JsonHasEveryRunAndNullForMissingNumbers) {
+    const nlohmann::json json = nlohmann::json::parse(results_json(sample_results(), BenchSettings{}));
+    EXPECT_EQ(json["settings"]["size"], 512);
+    EXPECT_EQ(json["scenes"].size(), 3u);
+    EXPECT_EQ(json["scenes"][0]["whitted"]["runs"].size(), 3u);
+    EXPECT_DOUBLE_EQ(json["scenes"][0]["whitted"]["render_seconds"]["median"].get<double>(), 0.08);
+    EXPECT_TRUE(json["scenes"][2]["whitted_over_povray"].is_null());
+    EXPECT_FALSE(json["scenes"][2].contains("povray"));
+    EXPECT_EQ(json["scenes"][2]["embree"]["failure"], "Embree on teapot6 exited with code 3");
+    EXPECT_TRUE(json["failed"].get<bool>());
+}
