@@ -16,6 +16,8 @@
 #include "whitted/ray.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
@@ -86,17 +88,25 @@ class WideRay {
     }
 
   private:
+    // The neighbouring float of a finite f towards +infinity (step +1) or -infinity (step -1),
+    // by stepping its bit pattern (std::nextafter is a library call, too slow here).
+    static float next_float(float f, int step) {
+        if (f == 0.0f) return step > 0 ? std::numeric_limits<float>::denorm_min() : -std::numeric_limits<float>::denorm_min();
+        const auto bits = std::bit_cast<std::uint32_t>(f);
+        const bool away_from_zero = (f > 0.0f) == (step > 0);
+        return std::bit_cast<float>(away_from_zero ? bits + 1 : bits - 1);
+    }
     static float round_down(double t) {
         if (t < -std::numeric_limits<float>::max()) return -std::numeric_limits<float>::infinity();
         if (t > std::numeric_limits<float>::max()) return std::numeric_limits<float>::max();
         const float f = static_cast<float>(t);
-        return static_cast<double>(f) > t ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+        return static_cast<double>(f) > t ? next_float(f, -1) : f;
     }
     static float round_up(double t) {
         if (t > std::numeric_limits<float>::max()) return std::numeric_limits<float>::infinity();
         if (t < -std::numeric_limits<float>::max()) return -std::numeric_limits<float>::max();
         const float f = static_cast<float>(t);
-        return static_cast<double>(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+        return static_cast<double>(f) < t ? next_float(f, +1) : f;
     }
 
     float inv_[3];
