@@ -73,24 +73,12 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     return nearest;
 }
 
-// The same search with the kernels: distances only, then one Hit for the nearest.
+// The same search with the fast queries: distances only, then one Hit for the nearest.
 std::optional<Hit> Scene::closest_hit_with_kernels(const Ray& ray, Interval t_range) const {
-    const std::span<const Primitive> all = data_.primitives;
-    const Interval query = t_range;
-    std::optional<std::uint32_t> nearest;
-    if (auto hit = kernels_->closest(ray, all.subspan(bounded_count_), t_range)) {
-        nearest = static_cast<std::uint32_t>(bounded_count_) + hit->index;
-        t_range.max = hit->t;
-    }
-    bvh_.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
-        if (auto hit = kernels_->closest(ray, all.subspan(first, count), Interval{t_range.min, t_max})) {
-            nearest = first + hit->index;
-            return hit->t;
-        }
-        return t_max;
-    });
+    const SceneView view{data_.primitives, bounded_count_, bvh_};
+    const std::optional<std::uint32_t> nearest = kernels_->closest(view, ray, t_range);
     if (!nearest) return std::nullopt;
-    std::optional<Hit> hit = intersect(ray, all[*nearest], query);
+    std::optional<Hit> hit = intersect(ray, data_.primitives[*nearest], t_range);
     if (hit) apply_vertex_normals(*hit, ray);
     return hit;
 }
@@ -115,14 +103,7 @@ bool Scene::occluded(const Ray& ray, Interval t_range) const {
 }
 
 bool Scene::occluded_with_kernels(const Ray& ray, Interval t_range) const {
-    const std::span<const Primitive> all = data_.primitives;
-    if (kernels_->any(ray, all.subspan(bounded_count_), t_range)) return true;
-    bool blocked = false;
-    bvh_.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
-        blocked = kernels_->any(ray, all.subspan(first, count), Interval{t_range.min, t_max});
-        return blocked ? -1.0 : t_max;
-    });
-    return blocked;
+    return kernels_->occluded(SceneView{data_.primitives, bounded_count_, bvh_}, ray, t_range);
 }
 
 } // namespace whitted

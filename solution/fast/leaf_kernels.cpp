@@ -1,4 +1,5 @@
-// The reference renderer's leaf kernels: hit distances only, with the same
+// The reference renderer's fast queries: the BVH walk with hit distances only
+// inlined into it, with the same
 // arithmetic, operation for operation, as the reference labs (solution/01 for
 // spheres, planes and triangles; the framework's boxes and cones), so that the
 // nearest primitive and its distance come out bit for bit the same.
@@ -54,7 +55,7 @@ std::optional<double> triangle_distance(const Ray& ray, const Triangle& triangle
     return t;
 }
 
-std::optional<double> distance(const Ray& ray, const Primitive& primitive, Interval t_range) {
+inline std::optional<double> distance(const Ray& ray, const Primitive& primitive, Interval t_range) {
     const Shape& shape = primitive.shape;
     if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere_distance(ray, *sphere, t_range);
     if (const auto* triangle = std::get_if<Triangle>(&shape)) return triangle_distance(ray, *triangle, t_range);
@@ -65,24 +66,48 @@ std::optional<double> distance(const Ray& ray, const Primitive& primitive, Inter
     return hit->t;
 }
 
-std::optional<LeafHit> closest(const Ray& ray, std::span<const Primitive> primitives, Interval t_range) {
-    std::optional<LeafHit> nearest;
-    for (std::uint32_t i = 0; i < primitives.size(); ++i) {
-        if (const std::optional<double> t = distance(ray, primitives[i], t_range)) {
+// The scene's closest-hit query: planes first (a hit there shortens the range
+// the BVH must search), then the BVH, leaves tested in order.
+std::optional<std::uint32_t> closest(const SceneView& scene, const Ray& ray, Interval t_range) {
+    std::optional<std::uint32_t> nearest;
+    for (std::size_t i = scene.bounded_count; i < scene.primitives.size(); ++i) {
+        if (const std::optional<double> t = distance(ray, scene.primitives[i], t_range)) {
             t_range.max = *t;
-            nearest = LeafHit{i, *t};
+            nearest = static_cast<std::uint32_t>(i);
         }
     }
+    scene.bvh.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+        const Interval leaf_range{t_range.min, t_max};
+        double nearest_t = t_max;
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            if (const std::optional<double> t = distance(ray, scene.primitives[i], Interval{leaf_range.min, nearest_t})) {
+                nearest_t = *t;
+                nearest = i;
+            }
+        }
+        return nearest_t;
+    });
     return nearest;
 }
 
-bool any(const Ray& ray, std::span<const Primitive> primitives, Interval t_range) {
-    for (const Primitive& primitive : primitives)
-        if (distance(ray, primitive, t_range)) return true;
-    return false;
+// The scene's occlusion query: any hit will do, so the first one ends it.
+bool occluded(const SceneView& scene, const Ray& ray, Interval t_range) {
+    for (std::size_t i = scene.bounded_count; i < scene.primitives.size(); ++i)
+        if (distance(ray, scene.primitives[i], t_range)) return true;
+    bool blocked = false;
+    scene.bvh.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            if (distance(ray, scene.primitives[i], Interval{t_range.min, t_max})) {
+                blocked = true;
+                return -1.0;
+            }
+        }
+        return t_max;
+    });
+    return blocked;
 }
 
-constexpr LeafKernels kReferenceKernels{closest, any};
+constexpr LeafKernels kReferenceKernels{closest, occluded};
 
 } // namespace
 
