@@ -99,7 +99,7 @@ bool occluded(const SceneView& scene, const Ray& ray, Interval t_range) {
     for (std::size_t i = scene.bounded_count; i < scene.primitives.size(); ++i)
         if (distance(ray, scene.primitives[i], t_range) != kMiss) return true;
     bool blocked = false;
-    scene.bvh.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+    scene.bvh.traverse<false>(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
         for (std::uint32_t i = first; i < first + count; ++i) {
             if (distance(ray, scene.primitives[i], Interval{t_range.min, t_max}) != kMiss) {
                 blocked = true;

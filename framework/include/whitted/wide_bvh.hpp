@@ -50,7 +50,7 @@ class WideBvh {
     /// Visits the leaves whose boxes the ray meets within (t_min, t_max), nearer
     /// boxes first, calling `leaf(first, count, t_max)`; the callback returns the
     /// new t_max (smaller after a hit) or a negative number to stop.
-    template <class LeafFn>
+    template <bool kNearestFirst = true, class LeafFn>
     void traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf) const;
 
   private:
@@ -59,7 +59,7 @@ class WideBvh {
     double extent_ = 0.0;
 };
 
-template <class LeafFn>
+template <bool kNearestFirst, class LeafFn>
 void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf) const {
     if (nodes_.empty()) {
         if (root_count_ > 0) leaf(0u, root_count_, t_max);
@@ -98,7 +98,8 @@ void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf
             for (; mask != 0; mask &= mask - 1) {
                 const int i = __builtin_ctz(mask);
                 stack[top] = {child_ref(node, i), t_entry[i]};
-                for (int k = top; k > base && stack[k].t_entry > stack[k - 1].t_entry; --k) std::swap(stack[k], stack[k - 1]);
+                if constexpr (kNearestFirst)
+                    for (int k = top; k > base && stack[k].t_entry > stack[k - 1].t_entry; --k) std::swap(stack[k], stack[k - 1]);
                 ++top;
             }
             current = stack[--top].ref;
