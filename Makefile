@@ -38,8 +38,9 @@ bench: DEPS_ARGS = --bench
 bench: configure
 	@cmake -S . -B $(BUILD_DIR) > /dev/null
 	@grep -q '^CMAKE_BUILD_TYPE:STRING=Release$$' $(BUILD_DIR)/CMakeCache.txt || echo "warning: $(BUILD_DIR) is not a Release build: the times say little"
-	@cmake --build $(BUILD_DIR) -j$(JOBS) --target whitted-bench
-	@./$(BUILD_DIR)/whitted-bench --flake $(BENCH_FLAKES) $(BENCH_SCENES) $(BENCH_ARGS)
+	@cmake --build $(BUILD_DIR) -j$(JOBS) --target whitted-bench $(if $(wildcard solution/01_ray_casting.cpp),whitted-as-student)
+	@./$(BUILD_DIR)/whitted-bench --flake $(BENCH_FLAKES) $(BENCH_SCENES) \
+	  $(if $(wildcard solution/01_ray_casting.cpp),--student-whitted $(BUILD_DIR)/whitted-as-student) $(BENCH_ARGS)
 
 # With the reference solution (the instructor's tree): every test, plainly.
 # Without it (the student handout): every test, then each lab's progress.
