@@ -54,8 +54,7 @@ struct Collapser {
                     node.bounds[2 * axis][i] = kInfinityF;
                     node.bounds[2 * axis + 1][i] = -kInfinityF;
                 }
-                node.child[i] = 0;
-                node.count[i] = 0;
+                node.child[i] = WideBvh::leaf_ref(0, 0);
                 continue;
             }
             const Bvh::Node& child = binary[children[i]];
@@ -64,11 +63,8 @@ struct Collapser {
                 node.bounds[2 * axis + 1][i] = float_above(child.bounds.max[axis]);
             }
             if (child.count > 0) {
-                node.child[i] = child.first;
-                node.count[i] = child.count;
+                node.child[i] = WideBvh::leaf_ref(child.first, child.count);
             } else {
-                node.count[i] = 0;
-                node.inner_mask |= static_cast<std::uint8_t>(1u << i);
                 const std::uint32_t grandchild = collapse(children[i]); // may reallocate `nodes`
                 nodes[index].child[i] = grandchild;
             }

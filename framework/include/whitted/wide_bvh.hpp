@@ -29,10 +29,16 @@ class WideBvh {
 
     struct alignas(64) Node {
         float bounds[6][kWidth];         // min x, max x, min y, max y, min z, max z of each child
-        std::uint32_t child[kWidth];     // inner child: node index; leaf: first primitive
-        std::uint16_t count[kWidth];     // leaf: number of primitives; 0 for an inner child or an empty slot
-        std::uint8_t inner_mask = 0;     // bit i set: child i is an inner node
+        std::uint64_t child[kWidth];     // inner child: node index; leaf: leaf_ref(first, count)
     };
+
+    /// A leaf child's reference: a flag bit, its primitive count and its first primitive.
+    static constexpr std::uint64_t kLeafFlag = std::uint64_t{1} << 63;
+    static constexpr std::uint64_t leaf_ref(std::uint32_t first, std::uint32_t count) {
+        return kLeafFlag | std::uint64_t{count} << 32 | first;
+    }
+
+    static_assert(sizeof(Node) == 128, "a node is two cache lines");
 
     WideBvh() = default;
 
@@ -66,22 +72,16 @@ void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf
         return;
     }
     const WideRay wide(ray, extent_, t_min, t_max);
-    // A reference to a child: an inner node's index, or a leaf's first primitive and count.
     struct Entry {
         std::uint64_t ref;
         float t_entry;
-    };
-    constexpr std::uint64_t kLeaf = std::uint64_t{1} << 63;
-    auto child_ref = [](const Node& node, int i) -> std::uint64_t {
-        return (node.inner_mask >> i & 1u) ? node.child[i]
-                                           : kLeaf | std::uint64_t{node.count[i]} << 32 | node.child[i];
     };
     Entry stack[256]; // 64 binary levels at most: at most 3 pending siblings per wide level
     int top = 0;
     std::uint64_t current = 0;
     for (;;) {
         // Descend through inner nodes, nearest child first, pushing the others.
-        while (!(current & kLeaf)) {
+        while (!(current & kLeafFlag)) {
             const Node& node = nodes_[current];
             float t_entry[kWidth];
             unsigned mask = wide.hit_boxes(node.bounds, t_entry);
@@ -89,15 +89,15 @@ void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf
             int first = __builtin_ctz(mask);
             mask &= mask - 1;
             if (mask == 0) {
-                current = child_ref(node, first);
+                current = node.child[first];
                 continue;
             }
             // Push every hit child, then bubble the nearer ones towards the top.
             const int base = top;
-            stack[top++] = {child_ref(node, first), t_entry[first]};
+            stack[top++] = {node.child[first], t_entry[first]};
             for (; mask != 0; mask &= mask - 1) {
                 const int i = __builtin_ctz(mask);
-                stack[top] = {child_ref(node, i), t_entry[i]};
+                stack[top] = {node.child[i], t_entry[i]};
                 if constexpr (kNearestFirst)
                     for (int k = top; k > base && stack[k].t_entry > stack[k - 1].t_entry; --k) std::swap(stack[k], stack[k - 1]);
                 ++top;
@@ -105,7 +105,7 @@ void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf
             current = stack[--top].ref;
         }
         {
-            const double new_t_max = leaf(static_cast<std::uint32_t>(current), static_cast<std::uint32_t>(current >> 32) & 0xffffu, t_max);
+            const double new_t_max = leaf(static_cast<std::uint32_t>(current), static_cast<std::uint32_t>(current >> 32) & 0x7fffffffu, t_max);
             if (new_t_max < 0.0) return;
             if (new_t_max < t_max) {
                 t_max = new_t_max;
