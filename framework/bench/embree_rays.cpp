@@ -33,6 +33,7 @@ struct Options {
     int repeat = 1;
     std::string quality = "high";
     std::string json;
+    bool eye_packets = false;
     bool quiet = false;
 };
 
@@ -66,16 +67,17 @@ int run(const Options& options) {
     std::vector<double> runs;
     whitted::bench::TrafficResult result;
     for (int i = 0; i < options.repeat; ++i) {
-        result = whitted::bench::shoot_ray_traffic(scene, data, max_depth, options.threads);
+        result = whitted::bench::shoot_ray_traffic(scene, data, max_depth, options.threads, options.eye_packets);
         runs.push_back(result.seconds);
     }
     const double render_seconds = median(runs);
     const whitted::bench::RayCounts& r = result.rays;
     if (!options.quiet) {
-        std::printf("%s: %dx%d, max depth %d, %d threads, %s (build quality %s): parse %.3f s, build %.3f s, "
+        std::printf("%s: %dx%d, max depth %d, %d threads, %s (build quality %s%s): parse %.3f s, build %.3f s, "
                     "rays %.3f s%s\n",
                     options.scene.c_str(), data.camera.res_x, data.camera.res_y, max_depth, result.threads,
-                    whitted::bench::EmbreeScene::version().c_str(), options.quality.c_str(), parse_seconds,
+                    whitted::bench::EmbreeScene::version().c_str(), options.quality.c_str(),
+                    options.eye_packets ? ", eye packets" : "", parse_seconds,
                     scene.build_seconds(), render_seconds, options.repeat > 1 ? " (median)" : "");
         std::printf("rays: %llu eye, %llu shadow, %llu reflected, %llu refracted; %llu in all; %.2f million rays per "
                     "second\n",
@@ -99,7 +101,9 @@ int run(const Options& options) {
              {{"eye", r.eye}, {"shadow", r.shadow}, {"reflected", r.reflected}, {"refracted", r.refracted},
               {"total", r.total()}}},
             {"primitives", data.primitives.size()},
-            {"renderer", whitted::bench::EmbreeScene::version() + " rtcIntersect1/rtcOccluded1"},
+            {"renderer", whitted::bench::EmbreeScene::version() +
+                             (options.eye_packets ? " rtcIntersect16 eye packets, rtcIntersect1/rtcOccluded1"
+                                                  : " rtcIntersect1/rtcOccluded1")},
             {"build_quality", options.quality},
             {"render_seconds_runs", runs}};
         std::ofstream out(options.json);
@@ -132,6 +136,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1000));
     app.add_option("--build-quality", options.quality, "Embree's BVH build quality: low, medium or high (default high)")
         ->check(CLI::IsMember({"low", "medium", "high"}));
+    app.add_flag("--eye-packets", options.eye_packets,
+                 "Shoot the eye rays of each 4x4 pixel block as one coherent rtcIntersect16 packet");
     app.add_option("--json", options.json, "Also write the timings and ray counts as JSON to FILE");
     app.add_flag("-q,--quiet", options.quiet, "Print nothing but errors");
     try {

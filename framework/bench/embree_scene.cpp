@@ -249,6 +249,59 @@ std::optional<Hit> EmbreeScene::closest_hit(const Ray& ray) const {
     return surface_hit(ray, ray_hit);
 }
 
+void EmbreeScene::closest_hits16(const Ray* rays, int count, std::optional<Hit>* hits) const {
+    RTCRayHit16 packet;
+    alignas(64) int valid[16];
+    for (int i = 0; i < 16; ++i) {
+        valid[i] = i < count ? -1 : 0;
+        const Ray& ray = rays[i < count ? i : 0];
+        // Planes first, as for single rays.
+        double t_max = kInfinity;
+        hits[i].reset();
+        if (i < count) {
+            for (std::uint32_t index : planes_) {
+                if (const auto t = plane_t(ray, std::get<Plane>(data_.primitives[index].shape), t_max)) {
+                    t_max = *t;
+                    hits[i] = make_hit(ray, *t, std::get<Plane>(data_.primitives[index].shape).normal);
+                    hits[i]->primitive = index;
+                    hits[i]->material = data_.primitives[index].material;
+                }
+            }
+        }
+        packet.ray.org_x[i] = static_cast<float>(ray.origin.x);
+        packet.ray.org_y[i] = static_cast<float>(ray.origin.y);
+        packet.ray.org_z[i] = static_cast<float>(ray.origin.z);
+        packet.ray.tnear[i] = 0.0f;
+        packet.ray.dir_x[i] = static_cast<float>(ray.direction.x);
+        packet.ray.dir_y[i] = static_cast<float>(ray.direction.y);
+        packet.ray.dir_z[i] = static_cast<float>(ray.direction.z);
+        packet.ray.time[i] = 0.0f;
+        packet.ray.tfar[i] = std::isinf(t_max) ? kFloatInfinity : static_cast<float>(t_max);
+        packet.ray.mask[i] = 0xFFFFFFFFu;
+        packet.ray.id[i] = static_cast<unsigned>(i);
+        packet.ray.flags[i] = 0;
+        packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect16(valid, scene_, &context, &packet);
+    for (int i = 0; i < count; ++i) {
+        if (packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+        RTCRayHit one;
+        one.ray.tfar = packet.ray.tfar[i];
+        one.hit.Ng_x = packet.hit.Ng_x[i];
+        one.hit.Ng_y = packet.hit.Ng_y[i];
+        one.hit.Ng_z = packet.hit.Ng_z[i];
+        one.hit.u = packet.hit.u[i];
+        one.hit.v = packet.hit.v[i];
+        one.hit.primID = packet.hit.primID[i];
+        one.hit.geomID = packet.hit.geomID[i];
+        hits[i] = surface_hit(rays[i], one);
+    }
+}
+
 bool EmbreeScene::occluded(const Ray& ray, double t_max) const {
     for (std::uint32_t index : planes_)
         if (plane_t(ray, std::get<Plane>(data_.primitives[index].shape), t_max)) return true;

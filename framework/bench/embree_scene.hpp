@@ -45,6 +45,10 @@ class EmbreeScene {
     /// The nearest surface along the ray with 0 < t, as a framework Hit (normals facing the ray).
     std::optional<Hit> closest_hit(const Ray& ray) const;
 
+    /// The nearest hits of up to 16 coherent rays (eye rays of a 4 x 4 block) in one
+    /// rtcIntersect16 packet query; hits[i] answers rays[i] for i < count.
+    void closest_hits16(const Ray* rays, int count, std::optional<Hit>* hits) const;
+
     /// True when a surface lies along the ray with 0 < t < t_max.
     bool occluded(const Ray& ray, double t_max) const;
 

@@ -65,47 +65,62 @@ class TrafficTracer {
         : scene_(scene), data_(data), max_depth_(max_depth), counts_(counts) {}
 
     // The eye ray through viewport point (x, y), pixels from the bottom left (as the reference's primary_ray).
-    void trace_pixel(double x, double y) const {
+    Ray eye_ray(double x, double y) const {
         const Camera& c = data_.camera;
         const Vec3 d = c.w * (x / c.res_x - 0.5) * c.xe + c.h * (y / c.res_y - 0.5) * c.ye - c.df * c.ze;
+        return Ray{c.eye, glm::normalize(d)};
+    }
+
+    // The whole ray tree of one pixel.
+    void trace_pixel(double x, double y) const {
         ++counts_.eye;
-        trace(Ray{c.eye, glm::normalize(d)}, 1);
+        trace(eye_ray(x, y), 1);
+    }
+
+    // The ray trees of the pixels of a block whose eye rays were already shot together.
+    void continue_eye_rays(const Ray* rays, const std::optional<Hit>* hits, int count) const {
+        for (int i = 0; i < count; ++i) {
+            ++counts_.eye;
+            if (hits[i]) shade(rays[i], *hits[i], 1);
+        }
     }
 
   private:
     void trace(const Ray& ray, int depth) const {
-        const std::optional<Hit> hit = scene_.closest_hit(ray);
-        if (!hit) return;
-        const Material& material = data_.materials[hit->material];
+        if (const std::optional<Hit> hit = scene_.closest_hit(ray)) shade(ray, *hit, depth);
+    }
+
+    void shade(const Ray& ray, const Hit& hit, int depth) const {
+        const Material& material = data_.materials[hit.material];
         const Vec3 wo = -ray.direction;
         // Shadow feelers towards the lights in front of the surface (blinn_phong, is_lit).
         for (const PointLight& light : data_.lights) {
-            const Vec3 to_light = light.position - hit->point;
+            const Vec3 to_light = light.position - hit.point;
             if (to_light == Vec3(0.0)) continue;
-            if (glm::dot(hit->normal, glm::normalize(to_light)) <= 0.0) continue;
+            if (glm::dot(hit.normal, glm::normalize(to_light)) <= 0.0) continue;
             // The feeler stops a millionth short of the light, as Tracer::occluded's does.
             const double distance = glm::length(to_light);
             ++counts_.shadow;
-            scene_.occluded(spawn_ray(*hit, to_light / distance), distance * (1.0 - 1e-6));
+            scene_.occluded(spawn_ray(hit, to_light / distance), distance * (1.0 - 1e-6));
         }
         if (depth >= max_depth_) return;
-        const Vec3 mirrored = 2.0 * glm::dot(wo, hit->normal) * hit->normal - wo;
+        const Vec3 mirrored = 2.0 * glm::dot(wo, hit.normal) * hit.normal - wo;
         if (material.transmittance > 0.0) {
             // fresnel_blend: the reflected ray always, the refracted one unless Kr = 1 or total internal reflection.
-            const double eta_i = hit->front_face ? 1.0 : material.ior;
-            const double eta_t = hit->front_face ? material.ior : 1.0;
-            const double kr = fresnel_reflectance(glm::dot(wo, hit->normal), eta_i, eta_t);
+            const double eta_i = hit.front_face ? 1.0 : material.ior;
+            const double eta_t = hit.front_face ? material.ior : 1.0;
+            const double kr = fresnel_reflectance(glm::dot(wo, hit.normal), eta_i, eta_t);
             ++counts_.reflected;
-            trace(spawn_ray(*hit, mirrored), depth + 1);
+            trace(spawn_ray(hit, mirrored), depth + 1);
             if (kr < 1.0) {
-                if (const std::optional<Vec3> wt = refracted_direction(wo, hit->normal, eta_i, eta_t)) {
+                if (const std::optional<Vec3> wt = refracted_direction(wo, hit.normal, eta_i, eta_t)) {
                     ++counts_.refracted;
-                    trace(spawn_ray(*hit, *wt), depth + 1);
+                    trace(spawn_ray(hit, *wt), depth + 1);
                 }
             }
         } else if (material.specular > 0.0) {
             ++counts_.reflected;
-            trace(spawn_ray(*hit, mirrored), depth + 1);
+            trace(spawn_ray(hit, mirrored), depth + 1);
         }
     }
 
@@ -125,7 +140,8 @@ void set_denormals_to_zero() {
 
 } // namespace
 
-TrafficResult shoot_ray_traffic(const EmbreeScene& scene, const SceneData& data, int max_depth, int threads) {
+TrafficResult shoot_ray_traffic(const EmbreeScene& scene, const SceneData& data, int max_depth, int threads,
+                                bool eye_packets) {
     const Camera& camera = data.camera;
     const int tiles_x = (camera.res_x + kTileSize - 1) / kTileSize;
     const int tiles_y = (camera.res_y + kTileSize - 1) / kTileSize;
@@ -144,9 +160,24 @@ TrafficResult shoot_ray_traffic(const EmbreeScene& scene, const SceneData& data,
             for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {
                 const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
                 const int x1 = std::min(x0 + kTileSize, camera.res_x), y1 = std::min(y0 + kTileSize, camera.res_y);
-                for (int row = y0; row < y1; ++row) {
-                    const int y = camera.res_y - 1 - row; // image rows go top-down, viewport y bottom-up
-                    for (int x = x0; x < x1; ++x) tracer.trace_pixel(x + 0.5, y + 0.5);
+                if (!eye_packets) {
+                    for (int row = y0; row < y1; ++row) {
+                        const int y = camera.res_y - 1 - row; // image rows go top-down, viewport y bottom-up
+                        for (int x = x0; x < x1; ++x) tracer.trace_pixel(x + 0.5, y + 0.5);
+                    }
+                    continue;
+                }
+                for (int by = y0; by < y1; by += 4) {
+                    for (int bx = x0; bx < x1; bx += 4) {
+                        Ray rays[16];
+                        std::optional<Hit> hits[16];
+                        int count = 0;
+                        for (int row = by; row < std::min(by + 4, y1); ++row)
+                            for (int x = bx; x < std::min(bx + 4, x1); ++x)
+                                rays[count++] = tracer.eye_ray(x + 0.5, camera.res_y - 1 - row + 0.5);
+                        scene.closest_hits16(rays, count, hits);
+                        tracer.continue_eye_rays(rays, hits, count);
+                    }
                 }
             }
         } catch (...) {

@@ -195,3 +195,15 @@ TEST(EmbreeTraffic, UsesTheThreadsItIsGivenAndTheSameCountsWithAny) {
     EXPECT_EQ(one.rays.total(), three.rays.total());
     EXPECT_EQ(one.rays.refracted, three.rays.refracted);
 }
+
+TEST(EmbreeTraffic, EyePacketsShootTheSameRays) {
+    SceneData data = every_kind();
+    data.camera = data.camera.with_resolution(37, 23); // blocks cut by the image's edges
+    const EmbreeScene scene(data, {});
+    const RayCounts single = shoot_ray_traffic(scene, data, 5, 2, false).rays;
+    const RayCounts packets = shoot_ray_traffic(scene, data, 5, 2, true).rays;
+    EXPECT_EQ(packets.eye, 37u * 23u);
+    EXPECT_EQ(packets.shadow, single.shadow);
+    EXPECT_EQ(packets.reflected, single.reflected);
+    EXPECT_EQ(packets.refracted, single.refracted);
+}
