@@ -1,5 +1,12 @@
 // Building the Embree scene from our primitives, and turning Embree's answers
-// back into the framework's Hits (see embree_scene.hpp for why).
+// back into the framework's Hits.
+//
+// Why: Embree finds which primitive a ray hits and roughly where (in float).
+// Everything after that is done in double precision on our own copy of the
+// primitive, as the reference does: the hit point is placed again exactly on the
+// surface, the normal comes from our geometry and pp triangles interpolate
+// their vertex normals. So secondary rays start where whitted's start, and the
+// harness shoots whitted's ray tree, not a float approximation of it.
 #include "embree_scene.hpp"
 
 #include <chrono>
