@@ -31,20 +31,29 @@ class WideRay {
   public:
     /// Prepares `ray` for boxes whose coordinates are at most `extent` in absolute value.
     WideRay(const Ray& ray, double extent, double t_min, double t_max) {
-        const double largest = std::max({std::abs(ray.direction.x), std::abs(ray.direction.y),
-                                         std::abs(ray.direction.z), 1e-300});
-        const double origin_size = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z)});
+        const Vec3 magnitude = glm::abs(ray.direction);
+        const double largest = std::max({magnitude.x, magnitude.y, magnitude.z, 1e-300});
+        const Vec3 origin_magnitude = glm::abs(ray.origin);
+        const double origin_size = std::max({origin_magnitude.x, origin_magnitude.y, origin_magnitude.z});
         const double margin = 0x1p-20 * (origin_size + extent) + 1e-30;
+        const double tiny = largest * 0x1p-60;
         for (int axis = 0; axis < 3; ++axis) {
-            double d = ray.direction[axis];
-            if (std::abs(d) < largest * 0x1p-60) d = std::copysign(largest * 0x1p-60, d);
+            const double d = magnitude[axis] < tiny ? std::copysign(tiny, ray.direction[axis]) : ray.direction[axis];
             const bool negative = d < 0.0;
-            const double inv = 1.0 / d;
+            // In float: its rounding, like every other, is far below the margin. Only a
+            // degenerate direction (all components below 1e-30) meets the floor.
+            float d_float = static_cast<float>(d);
+            if (!(std::abs(d_float) >= 1e-30f)) d_float = std::copysign(1e-30f, d_float);
+            const float inv = 1.0f / d_float;
             // Entry: origin moved along the ray by the margin; exit: moved back.
             const double shift = negative ? -margin : margin;
-            inv_[axis] = static_cast<float>(std::clamp(inv, -1e30, 1e30)); // only degenerate rays reach the clamp
-            origin_entry_[axis] = static_cast<float>(ray.origin[axis] + shift);
-            origin_exit_[axis] = static_cast<float>(ray.origin[axis] - shift);
+            const float entry_origin = static_cast<float>(ray.origin[axis] + shift);
+            const float exit_origin = static_cast<float>(ray.origin[axis] - shift);
+            for (int lane = 0; lane < 4; ++lane) {
+                inv_[axis][lane] = inv;
+                origin_entry_[axis][lane] = entry_origin;
+                origin_exit_[axis][lane] = exit_origin;
+            }
             near_[axis] = 2 * axis + (negative ? 1 : 0);
             far_[axis] = 2 * axis + (negative ? 0 : 1);
         }
@@ -64,9 +73,9 @@ class WideRay {
         __m128 entry = _mm_set1_ps(t_min_);
         __m128 exit = _mm_set1_ps(t_max_);
         for (int axis = 0; axis < 3; ++axis) {
-            const __m128 inv = _mm_set1_ps(inv_[axis]);
-            const __m128 t_near = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[near_[axis]]), _mm_set1_ps(origin_entry_[axis])), inv);
-            const __m128 t_far = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[far_[axis]]), _mm_set1_ps(origin_exit_[axis])), inv);
+            const __m128 inv = _mm_load_ps(inv_[axis]);
+            const __m128 t_near = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[near_[axis]]), _mm_load_ps(origin_entry_[axis])), inv);
+            const __m128 t_far = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[far_[axis]]), _mm_load_ps(origin_exit_[axis])), inv);
             entry = _mm_max_ps(entry, t_near);
             exit = _mm_min_ps(exit, t_far);
         }
@@ -77,8 +86,8 @@ class WideRay {
         for (int i = 0; i < 4; ++i) {
             float entry = t_min_, exit = t_max_;
             for (int axis = 0; axis < 3; ++axis) {
-                entry = std::max(entry, (bounds[near_[axis]][i] - origin_entry_[axis]) * inv_[axis]);
-                exit = std::min(exit, (bounds[far_[axis]][i] - origin_exit_[axis]) * inv_[axis]);
+                entry = std::max(entry, (bounds[near_[axis]][i] - origin_entry_[axis][i]) * inv_[axis][i]);
+                exit = std::min(exit, (bounds[far_[axis]][i] - origin_exit_[axis][i]) * inv_[axis][i]);
             }
             t_entry[i] = entry;
             if (entry <= exit) mask |= 1u << i;
@@ -109,9 +118,10 @@ class WideRay {
         return static_cast<double>(f) < t ? next_float(f, +1) : f;
     }
 
-    float inv_[3];
-    float origin_entry_[3];
-    float origin_exit_[3];
+    // Per axis, repeated in four lanes for the four-box test.
+    alignas(16) float inv_[3][4];
+    alignas(16) float origin_entry_[3][4];
+    alignas(16) float origin_exit_[3][4];
     int near_[3], far_[3];
     float t_min_;
     mutable float t_max_;
