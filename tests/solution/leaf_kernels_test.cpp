@@ -116,3 +116,14 @@ TEST(FastPath, RendersTheSameImageAsTheLabsForEveryShippedScene) {
         EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color))) << file;
     }
 }
+
+TEST(FastPath, ImageIsBitIdenticalForAnyThreadCount) {
+    LoadedScene loaded = load_scene(WHITTED_SOURCE_DIR "/scenes/whitted_1980.p3f");
+    loaded.data.camera = loaded.data.camera.with_resolution(64, 48);
+    const Scene scene(loaded.data, linked_leaf_kernels());
+    const Image one = render(scene, RenderSettings{}, 1).image;
+    for (int threads : {2, 3, 8}) {
+        const Image many = render(scene, RenderSettings{}, threads).image;
+        EXPECT_EQ(0, std::memcmp(one.pixels.data(), many.pixels.data(), one.pixels.size() * sizeof(Color))) << threads;
+    }
+}
