@@ -9,12 +9,16 @@ namespace {
 
 constexpr float kInfinityF = std::numeric_limits<float>::infinity();
 
-// Double to float, never upwards (for a box's minimum) or never downwards (its maximum).
+// A box's minimum and maximum in float, moved outwards by 2^-20 of their size
+// (WideRay's margin takes care of the ray's share of the rounding) and then
+// rounded outwards: never upwards for the minimum, never downwards for the maximum.
 float float_below(double x) {
+    x -= 0x1p-20 * std::abs(x);
     const float f = static_cast<float>(x);
     return static_cast<double>(f) > x ? std::nextafter(f, -kInfinityF) : f;
 }
 float float_above(double x) {
+    x += 0x1p-20 * std::abs(x);
     const float f = static_cast<float>(x);
     return static_cast<double>(f) < x ? std::nextafter(f, kInfinityF) : f;
 }
@@ -78,9 +82,6 @@ struct Collapser {
 WideBvh::WideBvh(const Bvh& binary) {
     const std::span<const Bvh::Node> tree = binary.nodes();
     if (tree.empty()) return;
-    const Aabb& root = tree[0].bounds;
-    for (int axis = 0; axis < 3; ++axis)
-        extent_ = std::max({extent_, std::abs(root.min[axis]), std::abs(root.max[axis])});
     if (tree[0].count > 0) {
         root_count_ = tree[0].count;
         return;

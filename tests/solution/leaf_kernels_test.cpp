@@ -127,3 +127,41 @@ TEST(FastPath, ImageIsBitIdenticalForAnyThreadCount) {
         EXPECT_EQ(0, std::memcmp(one.pixels.data(), many.pixels.data(), one.pixels.size() * sizeof(Color))) << threads;
     }
 }
+
+TEST(FastPath, RaysGrazingFarAwayBoxesFromNearTheOriginStillHitThem) {
+    // Boxes a million units away, rays from near the origin aimed a hair
+    // (1e-9 of the box size) inside a corner: the float boxes' rounding is far
+    // larger than that hair, so only boxes widened beyond their rounding keep
+    // these hits (the ray's own margin, 2^-20 |origin|, is tiny here).
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> position(-1.0, 1.0), size(0.5, 3.0);
+    SceneData data;
+    data.materials.push_back(Material{});
+    std::vector<Box> boxes;
+    for (int i = 0; i < 500; ++i) {
+        const Point3 low = Point3(1e6, 2e6, -1.5e6) + 1e4 * Point3(position(rng), position(rng), position(rng));
+        boxes.push_back(Box{low, low + Vec3(size(rng), size(rng), size(rng))});
+        data.primitives.push_back({boxes.back()});
+    }
+    const Scene labs(data);
+    const Scene fast(data, linked_leaf_kernels());
+    int hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Box& box = boxes[i % boxes.size()];
+        const int corner = i / static_cast<int>(boxes.size()) * 3 + i;
+        const Point3 c((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                       (corner & 4) ? box.max.z : box.min.z);
+        const Point3 target = c + 1e-9 * (0.5 * (box.min + box.max) - c);
+        const Point3 origin = 1e-3 * Point3(position(rng), position(rng), position(rng));
+        const Ray ray{origin, glm::normalize(target - origin)};
+        const auto expected = closest_hit(ray, labs.primitives(), Interval{}); // every primitive, no BVH
+        for (const Scene* scene : {&labs, &fast}) {
+            const auto found = scene->closest_hit(ray);
+            ASSERT_EQ(expected.has_value(), found.has_value()) << "ray " << i;
+            if (expected) EXPECT_EQ(expected->t, found->t) << "ray " << i;
+            ASSERT_EQ(expected.has_value(), scene->occluded(ray, Interval{0.0, 1e7})) << "ray " << i;
+        }
+        hits += expected.has_value();
+    }
+    EXPECT_GT(hits, 1900);
+}

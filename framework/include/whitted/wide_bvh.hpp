@@ -46,8 +46,6 @@ class WideBvh {
     explicit WideBvh(const Bvh& binary);
 
     std::span<const Node> nodes() const { return nodes_; }
-    /// The largest absolute coordinate of any box: the scale of WideRay's margins.
-    double extent() const { return extent_; }
     /// Bytes of the nodes.
     std::size_t bytes() const { return nodes_.size() * sizeof(Node); }
     /// True when the whole tree is one leaf (or empty); then `root_leaf` gives its range.
@@ -62,7 +60,6 @@ class WideBvh {
   private:
     std::vector<Node> nodes_;
     std::uint32_t root_count_ = 0; // primitives when the root is a leaf (nodes_ empty)
-    double extent_ = 0.0;
 };
 
 template <bool kNearestFirst, class LeafFn>
@@ -71,7 +68,7 @@ void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf
         if (root_count_ > 0) leaf(0u, root_count_, t_max);
         return;
     }
-    const WideRay wide(ray, extent_, t_min, t_max);
+    const WideRay wide(ray, t_min, t_max);
     struct Entry {
         std::uint64_t ref;
         float t_entry;

@@ -2,15 +2,16 @@
 //
 // Why: the wide BVH stores boxes in float and tests four per instruction, but a
 // box test that rounds the wrong way would lose a hit the exact test finds: a
-// hole in the image. So the test is made to err only towards "hit": each
-// slab's entry distance is computed from an origin moved forward by a margin
-// `m` and each exit distance from an origin moved back by `m`. Every rounding
-// error of the computation (the origin, direction and bounds in float, the
-// subtraction, the reciprocal, the product) is below 2^-22 (|origin| + extent)
-// in position, times |1/d| in t; the margin 2^-20 (|origin| + extent) covers it
-// four times over. A box may then be visited that the exact test would skip;
-// that costs a little time and never changes a hit. Direction components of 0
-// become tiny ones of the same sign, so no 0 × infinity (NaN) ever appears.
+// hole in the image. So the test is made to err only towards "hit". Every
+// rounding error of the computation (origin, direction and bounds in float, the
+// subtraction, the reciprocal, the product) is below 2^-22 (|origin| + |bound|)
+// in position, times |1/d| in t. The bound's share is covered by the BVH, which
+// moves every box face outwards by 2^-20 |bound| before rounding it outwards;
+// the origin's share by the ray: each slab's entry distance is computed from an
+// origin moved forward by m = 2^-20 |origin|, its exit distance from one moved
+// back by m. A box may then be visited that the exact test would skip; that
+// costs a little time and never changes a hit. Direction components of 0 become
+// tiny ones of the same sign, so no 0 × infinity (NaN) ever appears.
 #pragma once
 
 #include "whitted/ray.hpp"
@@ -29,13 +30,13 @@ namespace whitted {
 
 class WideRay {
   public:
-    /// Prepares `ray` for boxes whose coordinates are at most `extent` in absolute value.
-    WideRay(const Ray& ray, double extent, double t_min, double t_max) {
+    /// Prepares `ray` for boxes built by WideBvh (faces moved outwards), within (t_min, t_max).
+    WideRay(const Ray& ray, double t_min, double t_max) {
         const Vec3 magnitude = glm::abs(ray.direction);
         const double largest = std::max({magnitude.x, magnitude.y, magnitude.z, 1e-300});
         const Vec3 origin_magnitude = glm::abs(ray.origin);
         const double origin_size = std::max({origin_magnitude.x, origin_magnitude.y, origin_magnitude.z});
-        const double margin = 0x1p-20 * (origin_size + extent) + 1e-30;
+        const double margin = 0x1p-20 * origin_size + 1e-30;
         const double tiny = largest * 0x1p-60;
         for (int axis = 0; axis < 3; ++axis) {
             const double d = magnitude[axis] < tiny ? std::copysign(tiny, ray.direction[axis]) : ray.direction[axis];
