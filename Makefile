@@ -39,6 +39,7 @@ bench: configure
 	@cmake -S . -B $(BUILD_DIR) > /dev/null
 	@grep -q '^CMAKE_BUILD_TYPE:STRING=Release$$' $(BUILD_DIR)/CMakeCache.txt || echo "warning: $(BUILD_DIR) is not a Release build: the times say little"
 	@cmake --build $(BUILD_DIR) -j$(JOBS) --target whitted-bench $(if $(wildcard solution/01_ray_casting.cpp),whitted-as-student)
+	@test -d "$(SPD_DIR)" || echo "note: no SPD scenes in $(SPD_DIR): benching the generated scenes only (make bench SPD_DIR=folder/with/teapot6.nff...)"
 	@./$(BUILD_DIR)/whitted-bench --flake $(BENCH_FLAKES) $(BENCH_SCENES) \
 	  $(if $(wildcard solution/01_ray_casting.cpp),--student-whitted $(BUILD_DIR)/whitted-as-student) $(BENCH_ARGS)
 

@@ -223,7 +223,15 @@ Command add_render_command(CLI::App& app) {
         ->check(CLI::Range(1, 6));
     render_command->add_flag("--stats", options->stats, "Print how many rays of each kind were cast, and rays per second");
     render_command->add_option("--stats-json", options->stats_json,
-                               "Also write the timings (parse, build, render), ray counts and sizes as JSON to FILE");
+                               "Also write the timings (parse, build, render), ray counts and sizes as JSON to FILE")
+        ->type_name("FILE")
+        ->check(CLI::Validator(
+            [](const std::string& path) -> std::string {
+                const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+                if (!folder.empty() && !std::filesystem::is_directory(folder)) return "no such folder: " + folder.string();
+                return {};
+            },
+            "FILE"));
     render_command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary line");
     render_command->add_flag("--srgb", options->srgb, "Write sRGB-encoded 8-bit values (default: linear, as in the course)");
 

@@ -10,6 +10,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <ostream>
 #include <random>
 
 using namespace whitted;
@@ -57,6 +58,9 @@ struct Setting {
     Vec3 offset;
     double scale;
 };
+
+// Names the setting in test listings (instead of its bytes).
+void PrintTo(const Setting& setting, std::ostream* out) { *out << setting.name; }
 
 class FastPath : public ::testing::TestWithParam<Setting> {};
 
