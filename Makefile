@@ -36,7 +36,7 @@ render: build
 # Configuring again finds Embree when it has just been installed.
 bench: DEPS_ARGS = --bench
 bench: configure
-	@cmake -S . -B $(BUILD_DIR) > /dev/null
+	@cmake -S . -B $(BUILD_DIR) -DWHITTED_BENCH=ON > /dev/null
 	@grep -q '^CMAKE_BUILD_TYPE:STRING=Release$$' $(BUILD_DIR)/CMakeCache.txt || echo "warning: $(BUILD_DIR) is not a Release build: the times say little"
 	@cmake --build $(BUILD_DIR) -j$(JOBS) --target whitted-bench $(if $(wildcard solution/01_ray_casting.cpp),whitted-as-student)
 	@test -d "$(SPD_DIR)" || echo "note: no SPD scenes in $(SPD_DIR): benching the generated scenes only (make bench SPD_DIR=folder/with/teapot6.nff...)"

@@ -7,7 +7,10 @@
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cctype>
+#include <fstream>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -75,25 +78,26 @@ struct StatsRecord {
 
 // One JSON object with the render's timings, ray counts and sizes (for scripts).
 bool write_stats_json(const StatsRecord& r, const std::string& path) {
-    std::FILE* file = std::fopen(path.c_str(), "w");
-    if (!file) return false;
     const RayStats& s = r.result.stats;
-    std::string scene;
-    for (char c : r.scene) {
-        if (c == '"' || c == '\\') scene += '\\';
-        if (static_cast<unsigned char>(c) >= 0x20) scene += c;
-    }
-    std::fprintf(file,
-                 "{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"stage\": %d, \"max_depth\": %d, "
-                 "\"min_weight\": %.17g, \"threads\": %d,\n \"parse_seconds\": %.6f, \"build_seconds\": %.6f, "
-                 "\"render_seconds\": %.6f,\n \"rays\": {\"eye\": %llu, \"shadow\": %llu, \"reflected\": %llu, "
-                 "\"refracted\": %llu, \"total\": %llu},\n \"primitives\": %zu, \"acceleration_bytes\": %zu}\n",
-                 scene.c_str(), r.width, r.height, r.settings.stage, r.settings.max_depth, r.settings.min_weight,
-                 r.result.threads, r.parse_seconds, r.build_seconds, r.result.seconds,
-                 static_cast<unsigned long long>(s.eye), static_cast<unsigned long long>(s.shadow),
-                 static_cast<unsigned long long>(s.reflected), static_cast<unsigned long long>(s.refracted),
-                 static_cast<unsigned long long>(s.total()), r.built.primitives().size(), r.built.acceleration_bytes());
-    return std::fclose(file) == 0;
+    const nlohmann::json json = {
+        {"scene", r.scene},
+        {"width", r.width},
+        {"height", r.height},
+        {"stage", r.settings.stage},
+        {"max_depth", r.settings.max_depth},
+        {"min_weight", r.settings.min_weight},
+        {"threads", r.result.threads},
+        {"parse_seconds", r.parse_seconds},
+        {"build_seconds", r.build_seconds},
+        {"render_seconds", r.result.seconds},
+        {"rays", {{"eye", s.eye}, {"shadow", s.shadow}, {"reflected", s.reflected}, {"refracted", s.refracted}, {"total", s.total()}}},
+        {"primitives", r.built.primitives().size()},
+        {"acceleration_bytes", r.built.acceleration_bytes()},
+    };
+    std::ofstream out(path);
+    // A path that is not UTF-8 is written with replacement characters rather than as invalid JSON.
+    out << json.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+    return static_cast<bool>(out.flush());
 }
 
 // Lists the labs that are not done yet, one per line.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 
 namespace whitted {
@@ -77,9 +78,10 @@ struct Builder {
         std::array<Bin, kBins> bins{};
         const double lo = centroid_bounds.min[axis];
         const double scale = kBins / (centroid_bounds.max[axis] - lo);
+        if (!std::isfinite(scale)) return kMedian; // a subnormal spread: bins cannot tell the centroids apart
         auto bin_of = [&](std::uint32_t prim) {
-            const int b = static_cast<int>((centers[prim][axis] - lo) * scale);
-            return std::clamp(b, 0, kBins - 1);
+            // Clamped as a double: the product may overflow to infinity, which no int holds.
+            return static_cast<int>(std::clamp((centers[prim][axis] - lo) * scale, 0.0, kBins - 1.0));
         };
         for (std::uint32_t i = first; i < first + count; ++i) {
             Bin& bin = bins[bin_of(order[i])];

@@ -1,6 +1,7 @@
 // Collapsing the binary SAH tree into four-wide nodes with float boxes.
 #include "whitted/wide_bvh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -82,11 +83,13 @@ struct Collapser {
 WideBvh::WideBvh(const Bvh& binary) {
     const std::span<const Bvh::Node> tree = binary.nodes();
     if (tree.empty()) return;
+    const Aabb& root = tree[0].bounds;
+    for (int axis = 0; axis < 3; ++axis)
+        extent_ = std::max({extent_, std::abs(root.min[axis]), std::abs(root.max[axis])});
     if (tree[0].count > 0) {
         root_count_ = tree[0].count;
         return;
     }
-    nodes_.reserve(tree.size() / 2 + 1);
     Collapser{tree, nodes_}.collapse(0);
     nodes_.shrink_to_fit();
 }

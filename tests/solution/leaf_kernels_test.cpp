@@ -162,7 +162,9 @@ TEST(FastPath, RaysGrazingFarAwayBoxesFromNearTheOriginStillHitThem) {
         for (const Scene* scene : {&labs, &fast}) {
             const auto found = scene->closest_hit(ray);
             ASSERT_EQ(expected.has_value(), found.has_value()) << "ray " << i;
-            if (expected) EXPECT_EQ(expected->t, found->t) << "ray " << i;
+            if (expected) {
+                EXPECT_EQ(expected->t, found->t) << "ray " << i;
+            }
             ASSERT_EQ(expected.has_value(), scene->occluded(ray, Interval{0.0, 1e7})) << "ray " << i;
         }
         hits += expected.has_value();

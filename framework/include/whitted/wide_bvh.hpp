@@ -48,8 +48,8 @@ class WideBvh {
     std::span<const Node> nodes() const { return nodes_; }
     /// Bytes of the nodes.
     std::size_t bytes() const { return nodes_.size() * sizeof(Node); }
-    /// True when the whole tree is one leaf (or empty); then `root_leaf` gives its range.
-    bool root_is_leaf() const { return nodes_.empty(); }
+    /// The largest absolute coordinate of any box (WideRay's margin needs the scene's size).
+    double extent() const { return extent_; }
 
     /// Visits the leaves whose boxes the ray meets within (t_min, t_max), nearer
     /// boxes first, calling `leaf(first, count, t_max)`; the callback returns the
@@ -60,6 +60,7 @@ class WideBvh {
   private:
     std::vector<Node> nodes_;
     std::uint32_t root_count_ = 0; // primitives when the root is a leaf (nodes_ empty)
+    double extent_ = 0.0;
 };
 
 template <bool kNearestFirst, class LeafFn>
@@ -68,12 +69,12 @@ void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf
         if (root_count_ > 0) leaf(0u, root_count_, t_max);
         return;
     }
-    const WideRay wide(ray, t_min, t_max);
+    const WideRay wide(ray, extent_, t_min, t_max);
     struct Entry {
         std::uint64_t ref;
         float t_entry;
     };
-    Entry stack[256]; // 64 binary levels at most: at most 3 pending siblings per wide level
+    Entry stack[256]; // <= 3 pending siblings per level; the builder's trees have < 80 levels
     int top = 0;
     std::uint64_t current = 0;
     for (;;) {

@@ -10,8 +10,10 @@
 // the origin's share by the ray: each slab's entry distance is computed from an
 // origin moved forward by m = 2^-20 |origin|, its exit distance from one moved
 // back by m. A box may then be visited that the exact test would skip; that
-// costs a little time and never changes a hit. Direction components of 0 become
-// tiny ones of the same sign, so no 0 × infinity (NaN) ever appears.
+// costs a little time and never changes a hit. The direction is first scaled by
+// a power of two to unit size, and components of 0 become tiny ones of the same
+// sign, so no 0 × infinity (NaN) ever appears; the margin then also holds
+// 2^-58 of the scene's size, which keeps such a ray's slab open past the scene.
 #pragma once
 
 #include "whitted/ray.hpp"
@@ -30,22 +32,28 @@ namespace whitted {
 
 class WideRay {
   public:
-    /// Prepares `ray` for boxes built by WideBvh (faces moved outwards), within (t_min, t_max).
-    WideRay(const Ray& ray, double t_min, double t_max) {
+    /// Prepares `ray` for boxes built by WideBvh (faces moved outwards) within a
+    /// scene whose coordinates are at most `extent` in size, for t in (t_min, t_max).
+    WideRay(const Ray& ray, double extent, double t_min, double t_max) {
+        // Scale the direction by a power of two (exactly) so that its largest
+        // component lies in [0.5, 1): float then holds every direction, however
+        // long or short; distances along the scaled ray are t / scale.
         const Vec3 magnitude = glm::abs(ray.direction);
-        const double largest = std::max({magnitude.x, magnitude.y, magnitude.z, 1e-300});
+        const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
+        int exponent = 0;
+        if (largest > 0.0 && std::isfinite(largest)) std::frexp(largest, &exponent);
+        inverse_scale_ = std::ldexp(1.0, exponent);
         const Vec3 origin_magnitude = glm::abs(ray.origin);
         const double origin_size = std::max({origin_magnitude.x, origin_magnitude.y, origin_magnitude.z});
-        const double margin = 0x1p-20 * origin_size + 1e-30;
-        const double tiny = largest * 0x1p-60;
+        // The origin's share of the rounding, plus a sliver of the scene's size so
+        // that a direction component of 0 (replaced by 2^-62) keeps a slab the ray
+        // runs inside open for far longer than any distance in the scene.
+        const double margin = 0x1p-20 * origin_size + 0x1p-58 * extent + 1e-30;
         for (int axis = 0; axis < 3; ++axis) {
-            const double d = magnitude[axis] < tiny ? std::copysign(tiny, ray.direction[axis]) : ray.direction[axis];
+            double d = std::ldexp(ray.direction[axis], -exponent);
+            if (!(std::abs(d) >= 0x1p-62)) d = std::copysign(0x1p-62, d);
             const bool negative = d < 0.0;
-            // In float: its rounding, like every other, is far below the margin. Only a
-            // degenerate direction (all components below 1e-30) meets the floor.
-            float d_float = static_cast<float>(d);
-            if (!(std::abs(d_float) >= 1e-30f)) d_float = std::copysign(1e-30f, d_float);
-            const float inv = 1.0f / d_float;
+            const float inv = 1.0f / static_cast<float>(d); // its rounding, like every other, is far below the margin
             // Entry: origin moved along the ray by the margin; exit: moved back.
             const double shift = negative ? -margin : margin;
             const float entry_origin = static_cast<float>(ray.origin[axis] + shift);
@@ -58,14 +66,14 @@ class WideRay {
             near_[axis] = 2 * axis + (negative ? 1 : 0);
             far_[axis] = 2 * axis + (negative ? 0 : 1);
         }
-        t_min_ = round_down(t_min);
-        t_max_ = round_up(t_max);
+        t_min_ = round_down(t_min * inverse_scale_);
+        t_max_ = round_up(t_max * inverse_scale_);
     }
 
     float t_min() const { return t_min_; }
     float t_max() const { return t_max_; }
     /// Lowers the far end of the range after a hit at t.
-    void shrink(double t) const { t_max_ = round_up(t); }
+    void shrink(double t) const { t_max_ = round_up(t * inverse_scale_); }
 
     /// Tests four boxes (bounds[6][4] as in WideBvh::Node); returns a bit per box
     /// the ray may meet within its range, and each box's entry distance.
@@ -124,6 +132,7 @@ class WideRay {
     alignas(16) float origin_entry_[3][4];
     alignas(16) float origin_exit_[3][4];
     int near_[3], far_[3];
+    double inverse_scale_ = 1.0; // 2^exponent: distances in the scaled ray's units are t * inverse_scale_
     float t_min_;
     mutable float t_max_;
 };

@@ -1,0 +1,122 @@
+// The float box test must never reject a box the exact slab test accepts
+// (wide_ray.hpp): cases found by an exact (GMP) fuzzer in review: directions
+// far from unit length, and a unit ray from the world origin along a face at 0.
+#include "whitted/labs.hpp"
+#include "whitted/leaf_kernels.hpp"
+#include "whitted/scene.hpp"
+#include "whitted/wide_ray.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace whitted;
+
+namespace {
+
+// One real box in lane 0, the three other lanes empty (as WideBvh fills them).
+unsigned test_one_box(const WideRay& wide, Vec3 lo, Vec3 hi) {
+    alignas(16) float bounds[6][4];
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int lane = 1; lane < 4; ++lane) {
+            bounds[2 * axis][lane] = std::numeric_limits<float>::infinity();
+            bounds[2 * axis + 1][lane] = -std::numeric_limits<float>::infinity();
+        }
+        // As WideBvh stores them: moved outwards by 2^-20 of themselves, then rounded outwards.
+        const double low = lo[axis] - 0x1p-20 * std::abs(lo[axis]), high = hi[axis] + 0x1p-20 * std::abs(hi[axis]);
+        float f = static_cast<float>(low), g = static_cast<float>(high);
+        if (static_cast<double>(f) > low) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+        if (static_cast<double>(g) < high) g = std::nextafter(g, std::numeric_limits<float>::infinity());
+        bounds[2 * axis][0] = f;
+        bounds[2 * axis + 1][0] = g;
+    }
+    float t_entry[4];
+    return wide.hit_boxes(bounds, t_entry);
+}
+
+// Eight unit-ish boxes along x so that the root of the BVH is not a leaf.
+SceneData row_of_boxes() {
+    SceneData data;
+    data.materials.push_back(Material{});
+    for (int i = 0; i < 8; ++i)
+        data.primitives.push_back({Box{Point3(1.0 + 4.0 * i, -1.0, -2.0), Point3(2.0 + 4.0 * i, 0.015625, 2.0)}});
+    return data;
+}
+
+} // namespace
+
+// A tiny direction: flooring its components at a fixed 1e-30 would shrink an
+// axis's exit distance by up to that ratio; WideRay scales the direction first.
+// Exact: x in [1e30, 2e30], y exit = 0.015625 / 1e-40 = 1.6e38, z unconstrained: accepted.
+// Float: y exit = (0.015625 + m) * 1e30 = 1.6e28 < x entry ~1e30: rejected.
+TEST(WideRay, DirectionComponentBelowTheFloorLosesABox) {
+    const Ray ray{Point3(0.0), Vec3(1e-30, 1e-40, 0.0)};
+    const WideRay wide(ray, 2.0, 0.0, kInfinity); // extent: the box's largest coordinate
+    EXPECT_EQ(1u, test_one_box(wide, Vec3(1.0, -1.0, -2.0), Vec3(2.0, 0.015625, 2.0)));
+}
+
+// A huge direction: a component beyond FLT_MAX would become +inf in float, its
+// reciprocal 0, every distance on that axis 0, and t_min > 0 would reject the box.
+// Exact: x in [1e-39, 2e-39], y, z unconstrained; range (5e-40, inf): accepted.
+TEST(WideRay, DirectionComponentBeyondFloatMaxLosesABox) {
+    const Ray ray{Point3(0.0), Vec3(1e39, 0.0, 0.0)};
+    const WideRay wide(ray, 2.0, 5e-40, kInfinity);
+    EXPECT_EQ(1u, test_one_box(wide, Vec3(1.0, -1.0, -1.0), Vec3(2.0, 1.0, 1.0)));
+}
+
+// The same two holes seen through Scene (labs path and kernels path), against
+// the labs' closest_hit over every primitive without a BVH.
+TEST(WideRay, SceneMissesWhatTestingEveryPrimitiveFinds) {
+    const Scene labs(row_of_boxes());
+    const Scene fast(row_of_boxes(), linked_leaf_kernels());
+    struct Case {
+        Ray ray;
+        Interval range;
+    };
+    const Case cases[] = {{Ray{Point3(0.0), Vec3(1e-30, 1e-40, 0.0)}, Interval{0.0, kInfinity}},
+                          {Ray{Point3(0.0), Vec3(1e39, 0.0, 0.0)}, Interval{5e-40, kInfinity}}};
+    for (const Case& c : cases) {
+        const auto expected = closest_hit(c.ray, labs.primitives(), c.range);
+        ASSERT_TRUE(expected.has_value());
+        for (const Scene* scene : {&labs, &fast}) {
+            const auto found = scene->closest_hit(c.ray, c.range);
+            EXPECT_TRUE(found.has_value()) << (scene == &fast ? "kernels" : "labs") << " d.x=" << c.ray.direction.x;
+            EXPECT_TRUE(scene->occluded(c.ray, c.range)) << (scene == &fast ? "kernels" : "labs");
+        }
+    }
+}
+
+// A unit direction with a zero component (replaced by a tiny one): that axis's
+// exit distance is about (face - origin + m) / tiny. With the origin and the
+// face both at 0, a margin without the scene's size (2^-20 |origin| + 1e-30)
+// made it 1e-30 * 2^62 = 4.6e-12, and every farther box was rejected although
+// the axis does not constrain t.
+// Exact: x unconstrained (0 in [-1, 0]), z in [4, 5]: accepted.
+TEST(WideRay, UnitRayFromTheWorldOriginAlongABoxFaceAtZero) {
+    const Ray ray{Point3(0.0), Vec3(0.0, 0.0, -1.0)};
+    const WideRay wide(ray, 5.0, 0.0, kInfinity);
+    EXPECT_EQ(1u, test_one_box(wide, Vec3(-1.0, -1.0, -5.0), Vec3(0.0, 1.0, -4.0)));
+}
+
+// The same through Scene: a triangle with an edge on the plane x = 0, met by a
+// camera ray from the world origin exactly along that edge (b2 == 0: a hit for
+// the labs' Moller-Trumbore), among fillers that keep every box at x <= 0.
+TEST(WideRay, SceneLosesAnEdgeHitOnTheRayFromTheWorldOrigin) {
+    SceneData data;
+    data.materials.push_back(Material{});
+    for (int i = 0; i < 12; ++i) {
+        const double y = 10.0 * i; // i == 0: the triangle the ray meets
+        data.primitives.push_back({Triangle{Point3(0.0, y - 1.0, -5.0), Point3(0.0, y + 1.0, -5.0), Point3(-1.0, y, -5.0)}});
+    }
+    const Scene labs(data);
+    const Scene fast(data, linked_leaf_kernels());
+    const Ray ray{Point3(0.0), Vec3(0.0, 0.0, -1.0)};
+    const auto expected = closest_hit(ray, labs.primitives(), Interval{});
+    ASSERT_TRUE(expected.has_value());
+    EXPECT_EQ(5.0, expected->t);
+    EXPECT_TRUE(labs.closest_hit(ray).has_value()) << "labs path";
+    EXPECT_TRUE(fast.closest_hit(ray).has_value()) << "kernels path";
+    EXPECT_TRUE(labs.occluded(ray, Interval{0.0, 10.0}));
+    EXPECT_TRUE(fast.occluded(ray, Interval{0.0, 10.0}));
+}
