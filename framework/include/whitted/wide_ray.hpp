@@ -40,9 +40,9 @@ class WideRay {
         // long or short; distances along the scaled ray are t / scale.
         const Vec3 magnitude = glm::abs(ray.direction);
         const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
-        int exponent = 0;
-        if (largest > 0.0 && std::isfinite(largest)) std::frexp(largest, &exponent);
-        inverse_scale_ = std::ldexp(1.0, exponent);
+        const int exponent = std::clamp(binary_exponent(largest), -1020, 1020); // both scales stay finite
+        inverse_scale_ = power_of_two(exponent);
+        const double scale = power_of_two(-exponent);
         const Vec3 origin_magnitude = glm::abs(ray.origin);
         const double origin_size = std::max({origin_magnitude.x, origin_magnitude.y, origin_magnitude.z});
         // The origin's share of the rounding, plus a sliver of the scene's size so
@@ -50,7 +50,7 @@ class WideRay {
         // runs inside open for far longer than any distance in the scene.
         const double margin = 0x1p-20 * origin_size + 0x1p-58 * extent + 1e-30;
         for (int axis = 0; axis < 3; ++axis) {
-            double d = std::ldexp(ray.direction[axis], -exponent);
+            double d = ray.direction[axis] * scale; // exact: a power of two
             if (!(std::abs(d) >= 0x1p-62)) d = std::copysign(0x1p-62, d);
             const bool negative = d < 0.0;
             const float inv = 1.0f / static_cast<float>(d); // its rounding, like every other, is far below the margin
@@ -106,6 +106,22 @@ class WideRay {
     }
 
   private:
+    // e such that x = m 2^e with m in [0.5, 1); 0 for 0, infinities and NaN.
+    static int binary_exponent(double x) {
+        const auto biased = static_cast<int>(std::bit_cast<std::uint64_t>(x) >> 52 & 0x7ff);
+        if (biased == 0x7ff || x == 0.0) return 0;
+        if (biased == 0) {
+            int e = 0;
+            std::frexp(x, &e); // subnormal: rare, let the library count
+            return e;
+        }
+        return biased - 1022;
+    }
+    // 2^k, by its bit pattern when it is a normal double (std::ldexp is a library call).
+    static double power_of_two(int k) {
+        if (k < -1022 || k > 1023) return std::ldexp(1.0, k);
+        return std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
+    }
     // The neighbouring float of a finite f towards +infinity (step +1) or -infinity (step -1),
     // by stepping its bit pattern (std::nextafter is a library call, too slow here).
     static float next_float(float f, int step) {
