@@ -2,9 +2,9 @@
 //
 // Why: each step below names the reference function it mirrors (primary_ray,
 // is_lit, spawn_ray, refracted_direction, fresnel_reflectance) and repeats its
-// formula rather than calling it, so the harness needs no labs: it runs the
-// same in the instructor's tree and in the student handout, where the labs may
-// be unfinished.
+// formula rather than calling it, so the harness needs no labs and shoots the
+// reference's rays whatever state the labs are in. Being those formulas, these
+// files stay out of the student handout (scripts/export-handout.sh).
 #include "embree_traffic.hpp"
 
 #include <algorithm>

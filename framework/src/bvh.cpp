@@ -51,7 +51,6 @@ struct Builder {
                              [&](std::uint32_t a, std::uint32_t b) { return centers[a][axis] < centers[b][axis]; });
             mid = first + count / 2;
         }
-        nodes[index].axis = static_cast<std::uint16_t>(axis);
         // The left child directly follows its parent; `first` names the right one.
         const auto left = static_cast<std::uint32_t>(nodes.size());
         nodes.resize(nodes.size() + 1);
