@@ -1,6 +1,7 @@
 // The reference renderer's fast path (float four-wide BVH, distance-only leaf
 // kernels) must answer exactly as the labs' code testing every primitive does,
 // and render the very same image, bit for bit.
+#include "kernel_sets.hpp"
 #include "whitted/labs.hpp"
 #include "whitted/leaf_kernels.hpp"
 #include "whitted/render.hpp"
@@ -12,15 +13,27 @@
 #include <filesystem>
 #include <ostream>
 #include <random>
+#include <string>
+#include <tuple>
 
 using namespace whitted;
 
+namespace whitted {
+// Names a kernel set in test messages.
+void PrintTo(const NamedLeafKernels& set, std::ostream* out) { *out << set.name; }
+} // namespace whitted
+
 namespace {
+
+// Which shapes a random scene holds: all four kinds interleaved (leaves of
+// mixed kinds), or spheres only, or triangles only (leaves the AVX kernels
+// test four at a time).
+enum class Layout { mixed, spheres, triangles };
 
 // Random spheres, triangles (some flat in an axis plane: boxes of zero
 // thickness), boxes and a plane, all moved by `offset`, so that far-away
 // coordinates stress the float boxes' rounding.
-SceneData random_scene(unsigned seed, int count, Vec3 offset, double scale) {
+SceneData random_scene(unsigned seed, int count, Vec3 offset, double scale, Layout layout = Layout::mixed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> position(-10.0, 10.0), size(0.05, 1.5);
     SceneData data;
@@ -28,7 +41,8 @@ SceneData random_scene(unsigned seed, int count, Vec3 offset, double scale) {
     for (int i = 0; i < count; ++i) {
         const Point3 c = offset + scale * Point3(position(rng), position(rng), position(rng));
         const double a = scale * size(rng), b = scale * size(rng), h = scale * size(rng);
-        switch (i % 4) {
+        const int kind = layout == Layout::mixed ? i % 4 : layout == Layout::spheres ? 0 : 1 + i % 2;
+        switch (kind) {
         case 0: data.primitives.push_back({Sphere{c, a}}); break;
         case 1: data.primitives.push_back({Triangle{c, c + Vec3(a, 0.0, h), c + Vec3(0.0, b, h)}}); break;
         case 2: data.primitives.push_back({Triangle{c, c + Vec3(a, 0.0, 0.0), c + Vec3(0.0, b, 0.0)}}); break;
@@ -59,18 +73,26 @@ struct Setting {
     double scale;
 };
 
-// Names the setting in test listings (instead of its bytes).
+// Names a setting in test listings and messages (instead of its bytes).
 void PrintTo(const Setting& setting, std::ostream* out) { *out << setting.name; }
 
-class FastPath : public ::testing::TestWithParam<Setting> {};
+const char* name(Layout layout) {
+    return layout == Layout::mixed ? "mixed" : layout == Layout::spheres ? "spheres" : "triangles";
+}
+
+class FastPath : public ::testing::TestWithParam<std::tuple<Setting, Layout, NamedLeafKernels>> {};
 
 } // namespace
 
-TEST_P(FastPath, ClosestHitAndOcclusionAgreeWithTestingEveryPrimitive) {
-    const Setting setting = GetParam();
-    const Scene labs(random_scene(3, 2000, setting.offset, setting.scale));
-    const Scene fast(random_scene(3, 2000, setting.offset, setting.scale), linked_leaf_kernels());
+TEST(FastPath, TheBestKernelsThisCpuRunsAreLinked) {
     ASSERT_NE(linked_leaf_kernels(), nullptr);
+    EXPECT_EQ(linked_leaf_kernels(), runnable_leaf_kernels().back().kernels);
+}
+
+TEST_P(FastPath, ClosestHitAndOcclusionAgreeWithTestingEveryPrimitive) {
+    const auto [setting, layout, kernels] = GetParam();
+    const Scene labs(random_scene(3, 2000, setting.offset, setting.scale, layout));
+    const Scene fast(random_scene(3, 2000, setting.offset, setting.scale, layout), kernels.kernels);
     std::mt19937 rng(5);
     int hits = 0, blocked = 0;
     for (int i = 0; i < 3000; ++i) {
@@ -97,11 +119,64 @@ TEST_P(FastPath, ClosestHitAndOcclusionAgreeWithTestingEveryPrimitive) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, FastPath,
-                         ::testing::Values(Setting{"unit", Vec3(0.0), 1.0},
-                                           Setting{"far_away", Vec3(3e6, -2e6, 1e6), 1.0},
-                                           Setting{"tiny", Vec3(1e-3), 1e-5},
-                                           Setting{"huge", Vec3(0.0), 1e9}),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         ::testing::Combine(::testing::Values(Setting{"unit", Vec3(0.0), 1.0},
+                                                              Setting{"far_away", Vec3(3e6, -2e6, 1e6), 1.0},
+                                                              Setting{"tiny", Vec3(1e-3), 1e-5},
+                                                              Setting{"huge", Vec3(0.0), 1e9}),
+                                            ::testing::Values(Layout::mixed, Layout::spheres, Layout::triangles),
+                                            ::testing::ValuesIn(runnable_leaf_kernels())),
+                         [](const auto& info) {
+                             return std::string(std::get<0>(info.param).name) + "_" + name(std::get<1>(info.param)) + "_" +
+                                    std::get<2>(info.param).name;
+                         });
+
+TEST(FastPath, EqualDistancesGoToTheFirstPrimitiveAsInTheLabs) {
+    // Copies of one triangle and of one sphere, side by side in one leaf: every
+    // copy is hit at the same t, and the labs' loop (a strictly nearer hit
+    // replaces the one kept) answers with the first copy. So must every kernel set.
+    SceneData data;
+    data.materials.push_back(Material{});
+    const Triangle triangle{Point3(-1.0, -1.0, 0.0), Point3(1.0, -1.0, 0.0), Point3(0.0, 1.0, 0.0)};
+    const Sphere sphere{Point3(0.0, 0.0, 5.0), 1.0};
+    for (int i = 0; i < 3; ++i) data.primitives.push_back({sphere});
+    for (int i = 0; i < 4; ++i) data.primitives.push_back({triangle});
+    for (const auto& [name, kernels] : runnable_leaf_kernels()) {
+        const Scene labs(data);
+        const Scene fast(data, kernels);
+        for (const Ray& ray : {Ray{Point3(0.1, 0.0, -3.0), Vec3(0.0, 0.0, 1.0)}, Ray{Point3(0.1, 0.0, 9.0), Vec3(0.0, 0.0, -1.0)}}) {
+            const auto expected = closest_hit(ray, labs.primitives(), Interval{});
+            const auto found = fast.closest_hit(ray);
+            ASSERT_TRUE(expected && found) << name;
+            EXPECT_EQ(expected->primitive, found->primitive) << name;
+            EXPECT_EQ(expected->t, found->t) << name;
+        }
+    }
+}
+
+TEST(FastPath, ExactEdgesCountAsInTheLabs) {
+    // Two copies of a triangle (so the AVX kernels test them as a run) with
+    // corners p0 = (-1,-1,0), p1 = (1,-1,0), p2 = (0,1,0). Aimed along +z at p1
+    // from (1,-1,-3): e1 = (2,0,0), e2 = (1,2,0), p = d x e2 = (-2,1,0),
+    // det = -4, s = (2,0,-3), b1 = -4 / -4 = 1 exactly, q = s x e1 = (0,-6,0),
+    // b2 = 0, t = e2.q / det = 3: every number exact, and the corner is a hit
+    // (the test rejects only b1 > 1). A shadow feeler whose range ends at
+    // exactly t = 3 is not blocked (ranges are open).
+    SceneData data;
+    data.materials.push_back(Material{});
+    const Triangle triangle{Point3(-1.0, -1.0, 0.0), Point3(1.0, -1.0, 0.0), Point3(0.0, 1.0, 0.0)};
+    for (int i = 0; i < 2; ++i) data.primitives.push_back({triangle});
+    const Ray ray{Point3(1.0, -1.0, -3.0), Vec3(0.0, 0.0, 1.0)};
+    for (const auto& [name, kernels] : runnable_leaf_kernels()) {
+        const Scene fast(data, kernels);
+        const auto found = fast.closest_hit(ray);
+        ASSERT_TRUE(found) << name;
+        EXPECT_EQ(found->t, 3.0) << name;
+        EXPECT_EQ(found->primitive, 0u) << name;
+        EXPECT_TRUE(fast.occluded(ray, Interval{0.0, 3.5})) << name;
+        EXPECT_FALSE(fast.occluded(ray, Interval{0.0, 3.0})) << name;
+        EXPECT_FALSE(fast.occluded(ray, Interval{3.0, 4.0})) << name;
+    }
+}
 
 TEST(FastPath, RendersTheSameImageAsTheLabsForEveryShippedScene) {
     // Every shape kind appears in these: spheres (inward too), planes, triangles, boxes, cones.
@@ -114,10 +189,12 @@ TEST(FastPath, RendersTheSameImageAsTheLabsForEveryShippedScene) {
         loaded.data.camera = loaded.data.camera.with_resolution(48, 36);
         const RenderSettings settings;
         const Scene labs(loaded.data);
-        const Scene fast(loaded.data, linked_leaf_kernels());
         const Image a = render(labs, settings, 2).image;
-        const Image b = render(fast, settings, 2).image;
-        EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color))) << file;
+        for (const auto& [name, kernels] : runnable_leaf_kernels()) {
+            const Scene fast(loaded.data, kernels);
+            const Image b = render(fast, settings, 2).image;
+            EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color))) << file << " " << name;
+        }
     }
 }
 
