@@ -1,7 +1,6 @@
 // The reference renderer's fast path (float four-wide BVH, distance-only leaf
 // kernels) must answer exactly as the labs' code testing every primitive does,
 // and render the very same image, bit for bit.
-#include "kernel_sets.hpp"
 #include "whitted/labs.hpp"
 #include "whitted/leaf_kernels.hpp"
 #include "whitted/render.hpp"
@@ -18,16 +17,11 @@
 
 using namespace whitted;
 
-namespace whitted {
-// Names a kernel set in test messages.
-void PrintTo(const NamedLeafKernels& set, std::ostream* out) { *out << set.name; }
-} // namespace whitted
 
 namespace {
 
 // Which shapes a random scene holds: all four kinds interleaved (leaves of
-// mixed kinds), or spheres only, or triangles only (leaves the AVX kernels
-// test four at a time).
+// mixed kinds), or spheres only, or triangles only.
 enum class Layout { mixed, spheres, triangles };
 
 // Random spheres, triangles (some flat in an axis plane: boxes of zero
@@ -80,19 +74,15 @@ const char* name(Layout layout) {
     return layout == Layout::mixed ? "mixed" : layout == Layout::spheres ? "spheres" : "triangles";
 }
 
-class FastPath : public ::testing::TestWithParam<std::tuple<Setting, Layout, NamedLeafKernels>> {};
+class FastPath : public ::testing::TestWithParam<std::tuple<Setting, Layout>> {};
 
 } // namespace
 
-TEST(FastPath, TheBestKernelsThisCpuRunsAreLinked) {
-    ASSERT_NE(linked_leaf_kernels(), nullptr);
-    EXPECT_EQ(linked_leaf_kernels(), runnable_leaf_kernels().back().kernels);
-}
-
 TEST_P(FastPath, ClosestHitAndOcclusionAgreeWithTestingEveryPrimitive) {
-    const auto [setting, layout, kernels] = GetParam();
+    const auto [setting, layout] = GetParam();
     const Scene labs(random_scene(3, 2000, setting.offset, setting.scale, layout));
-    const Scene fast(random_scene(3, 2000, setting.offset, setting.scale, layout), kernels.kernels);
+    const Scene fast(random_scene(3, 2000, setting.offset, setting.scale, layout), linked_leaf_kernels());
+    ASSERT_NE(linked_leaf_kernels(), nullptr);
     std::mt19937 rng(5);
     int hits = 0, blocked = 0;
     for (int i = 0; i < 3000; ++i) {
@@ -123,39 +113,32 @@ INSTANTIATE_TEST_SUITE_P(Scales, FastPath,
                                                               Setting{"far_away", Vec3(3e6, -2e6, 1e6), 1.0},
                                                               Setting{"tiny", Vec3(1e-3), 1e-5},
                                                               Setting{"huge", Vec3(0.0), 1e9}),
-                                            ::testing::Values(Layout::mixed, Layout::spheres, Layout::triangles),
-                                            ::testing::ValuesIn(runnable_leaf_kernels())),
-                         [](const auto& info) {
-                             return std::string(std::get<0>(info.param).name) + "_" + name(std::get<1>(info.param)) + "_" +
-                                    std::get<2>(info.param).name;
-                         });
+                                            ::testing::Values(Layout::mixed, Layout::spheres, Layout::triangles)),
+                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + name(std::get<1>(info.param)); });
 
 TEST(FastPath, EqualDistancesGoToTheFirstPrimitiveAsInTheLabs) {
     // Copies of one triangle and of one sphere, side by side in one leaf: every
     // copy is hit at the same t, and the labs' loop (a strictly nearer hit
-    // replaces the one kept) answers with the first copy. So must every kernel set.
+    // replaces the one kept) answers with the first copy. So must the kernels.
     SceneData data;
     data.materials.push_back(Material{});
     const Triangle triangle{Point3(-1.0, -1.0, 0.0), Point3(1.0, -1.0, 0.0), Point3(0.0, 1.0, 0.0)};
     const Sphere sphere{Point3(0.0, 0.0, 5.0), 1.0};
     for (int i = 0; i < 3; ++i) data.primitives.push_back({sphere});
     for (int i = 0; i < 4; ++i) data.primitives.push_back({triangle});
-    for (const auto& [name, kernels] : runnable_leaf_kernels()) {
-        const Scene labs(data);
-        const Scene fast(data, kernels);
-        for (const Ray& ray : {Ray{Point3(0.1, 0.0, -3.0), Vec3(0.0, 0.0, 1.0)}, Ray{Point3(0.1, 0.0, 9.0), Vec3(0.0, 0.0, -1.0)}}) {
-            const auto expected = closest_hit(ray, labs.primitives(), Interval{});
-            const auto found = fast.closest_hit(ray);
-            ASSERT_TRUE(expected && found) << name;
-            EXPECT_EQ(expected->primitive, found->primitive) << name;
-            EXPECT_EQ(expected->t, found->t) << name;
-        }
+    const Scene labs(data);
+    const Scene fast(data, linked_leaf_kernels());
+    for (const Ray& ray : {Ray{Point3(0.1, 0.0, -3.0), Vec3(0.0, 0.0, 1.0)}, Ray{Point3(0.1, 0.0, 9.0), Vec3(0.0, 0.0, -1.0)}}) {
+        const auto expected = closest_hit(ray, labs.primitives(), Interval{});
+        const auto found = fast.closest_hit(ray);
+        ASSERT_TRUE(expected && found);
+        EXPECT_EQ(expected->primitive, found->primitive);
+        EXPECT_EQ(expected->t, found->t);
     }
 }
 
 TEST(FastPath, ExactEdgesCountAsInTheLabs) {
-    // Two copies of a triangle (so the AVX kernels test them as a run) with
-    // corners p0 = (-1,-1,0), p1 = (1,-1,0), p2 = (0,1,0). Aimed along +z at p1
+    // Two copies of a triangle (one leaf) with corners p0 = (-1,-1,0), p1 = (1,-1,0), p2 = (0,1,0). Aimed along +z at p1
     // from (1,-1,-3): e1 = (2,0,0), e2 = (1,2,0), p = d x e2 = (-2,1,0),
     // det = -4, s = (2,0,-3), b1 = -4 / -4 = 1 exactly, q = s x e1 = (0,-6,0),
     // b2 = 0, t = e2.q / det = 3: every number exact, and the corner is a hit
@@ -166,16 +149,14 @@ TEST(FastPath, ExactEdgesCountAsInTheLabs) {
     const Triangle triangle{Point3(-1.0, -1.0, 0.0), Point3(1.0, -1.0, 0.0), Point3(0.0, 1.0, 0.0)};
     for (int i = 0; i < 2; ++i) data.primitives.push_back({triangle});
     const Ray ray{Point3(1.0, -1.0, -3.0), Vec3(0.0, 0.0, 1.0)};
-    for (const auto& [name, kernels] : runnable_leaf_kernels()) {
-        const Scene fast(data, kernels);
-        const auto found = fast.closest_hit(ray);
-        ASSERT_TRUE(found) << name;
-        EXPECT_EQ(found->t, 3.0) << name;
-        EXPECT_EQ(found->primitive, 0u) << name;
-        EXPECT_TRUE(fast.occluded(ray, Interval{0.0, 3.5})) << name;
-        EXPECT_FALSE(fast.occluded(ray, Interval{0.0, 3.0})) << name;
-        EXPECT_FALSE(fast.occluded(ray, Interval{3.0, 4.0})) << name;
-    }
+    const Scene fast(data, linked_leaf_kernels());
+    const auto found = fast.closest_hit(ray);
+    ASSERT_TRUE(found);
+    EXPECT_EQ(found->t, 3.0);
+    EXPECT_EQ(found->primitive, 0u);
+    EXPECT_TRUE(fast.occluded(ray, Interval{0.0, 3.5}));
+    EXPECT_FALSE(fast.occluded(ray, Interval{0.0, 3.0}));
+    EXPECT_FALSE(fast.occluded(ray, Interval{3.0, 4.0}));
 }
 
 TEST(FastPath, RendersTheSameImageAsTheLabsForEveryShippedScene) {
@@ -189,12 +170,10 @@ TEST(FastPath, RendersTheSameImageAsTheLabsForEveryShippedScene) {
         loaded.data.camera = loaded.data.camera.with_resolution(48, 36);
         const RenderSettings settings;
         const Scene labs(loaded.data);
+        const Scene fast(loaded.data, linked_leaf_kernels());
         const Image a = render(labs, settings, 2).image;
-        for (const auto& [name, kernels] : runnable_leaf_kernels()) {
-            const Scene fast(loaded.data, kernels);
-            const Image b = render(fast, settings, 2).image;
-            EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color))) << file << " " << name;
-        }
+        const Image b = render(fast, settings, 2).image;
+        EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color))) << file;
     }
 }
 
