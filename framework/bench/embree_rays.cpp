@@ -7,8 +7,12 @@
 // times are split as whitted splits them: parsing the scene file (our loader),
 // building the acceleration structure (rtcCommitScene), and shooting the rays
 // (wall clock of the whole image), so the benchmark driver treats both alike.
+// With --engine whitted the same traffic goes into whitted's own Scene (the
+// reference's BVH and leaf kernels) instead: traversal against traversal, with
+// whitted's shading left out as Embree's is.
 #include "embree_traffic.hpp"
 #include "output_size.hpp"
+#include "whitted/leaf_kernels.hpp"
 #include "whitted/scene_loader.hpp"
 
 #include <CLI/CLI.hpp>
@@ -20,6 +24,7 @@
 #include <exception>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +37,7 @@ struct Options {
     int threads = 0;
     int repeat = 1;
     std::string quality = "high";
+    std::string engine = "embree";
     std::string json;
     bool eye_packets = false;
     bool quiet = false;
@@ -62,7 +68,25 @@ int run(const Options& options) {
     whitted::bench::EmbreeSettings settings;
     settings.build_threads = options.threads;
     settings.quality = qualities.at(options.quality);
-    const whitted::bench::EmbreeScene scene(data, settings);
+    // The engine the rays go to, and its name and build time for the report.
+    std::unique_ptr<const whitted::bench::EmbreeScene> embree;
+    std::unique_ptr<const whitted::Scene> own;
+    std::unique_ptr<const whitted::bench::RayQueries> own_queries;
+    double build_seconds = 0.0;
+    std::string renderer;
+    if (options.engine == "embree") {
+        embree = std::make_unique<const whitted::bench::EmbreeScene>(data, settings);
+        build_seconds = embree->build_seconds();
+        renderer = whitted::bench::EmbreeScene::version() +
+                   (options.eye_packets ? " rtcIntersect16 eye packets, rtcIntersect1/rtcOccluded1" : " rtcIntersect1/rtcOccluded1");
+    } else {
+        const auto build_start = std::chrono::steady_clock::now();
+        own = std::make_unique<const whitted::Scene>(data, whitted::linked_leaf_kernels());
+        build_seconds = seconds_since(build_start);
+        own_queries = std::make_unique<const whitted::bench::SceneQueries>(*own);
+        renderer = whitted::linked_leaf_kernels() ? "whitted Scene, reference leaf kernels" : "whitted Scene, labs' code";
+    }
+    const whitted::bench::RayQueries& scene = embree ? static_cast<const whitted::bench::RayQueries&>(*embree) : *own_queries;
 
     std::vector<double> runs;
     whitted::bench::TrafficResult result;
@@ -73,12 +97,10 @@ int run(const Options& options) {
     const double render_seconds = median(runs);
     const whitted::bench::RayCounts& r = result.rays;
     if (!options.quiet) {
-        std::printf("%s: %dx%d, max depth %d, %d threads, %s (build quality %s%s): parse %.3f s, build %.3f s, "
-                    "rays %.3f s%s\n",
+        std::printf("%s: %dx%d, max depth %d, %d threads, %s%s: parse %.3f s, build %.3f s, rays %.3f s%s\n",
                     options.scene.c_str(), data.camera.res_x, data.camera.res_y, max_depth, result.threads,
-                    whitted::bench::EmbreeScene::version().c_str(), options.quality.c_str(),
-                    options.eye_packets ? ", eye packets" : "", parse_seconds,
-                    scene.build_seconds(), render_seconds, options.repeat > 1 ? " (median)" : "");
+                    renderer.c_str(), embree ? (" (build quality " + options.quality + ")").c_str() : "", parse_seconds,
+                    build_seconds, render_seconds, options.repeat > 1 ? " (median)" : "");
         std::printf("rays: %llu eye, %llu shadow, %llu reflected, %llu refracted; %llu in all; %.2f million rays per "
                     "second\n",
                     static_cast<unsigned long long>(r.eye), static_cast<unsigned long long>(r.shadow),
@@ -95,15 +117,14 @@ int run(const Options& options) {
             {"min_weight", 0.0},
             {"threads", result.threads},
             {"parse_seconds", parse_seconds},
-            {"build_seconds", scene.build_seconds()},
+            {"build_seconds", build_seconds},
             {"render_seconds", render_seconds},
             {"rays",
              {{"eye", r.eye}, {"shadow", r.shadow}, {"reflected", r.reflected}, {"refracted", r.refracted},
               {"total", r.total()}}},
             {"primitives", data.primitives.size()},
-            {"renderer", whitted::bench::EmbreeScene::version() +
-                             (options.eye_packets ? " rtcIntersect16 eye packets, rtcIntersect1/rtcOccluded1"
-                                                  : " rtcIntersect1/rtcOccluded1")},
+            {"renderer", renderer},
+            {"engine", options.engine},
             {"build_quality", options.quality},
             {"render_seconds_runs", runs}};
         std::ofstream out(options.json);
@@ -136,6 +157,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1000));
     app.add_option("--build-quality", options.quality, "Embree's BVH build quality: low, medium or high (default high)")
         ->check(CLI::IsMember({"low", "medium", "high"}));
+    app.add_option("--engine", options.engine,
+                   "Where the rays go: embree, or whitted (its own Scene, to compare traversal alone; default embree)")
+        ->check(CLI::IsMember({"embree", "whitted"}));
     app.add_flag("--eye-packets", options.eye_packets,
                  "Shoot the eye rays of each 4x4 pixel block as one coherent rtcIntersect16 packet");
     app.add_option("--json", options.json, "Also write the timings and ray counts as JSON to FILE");

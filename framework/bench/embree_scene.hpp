@@ -11,6 +11,8 @@
 // ray tree above it is written exactly as the labs write it.
 #pragma once
 
+#include "ray_queries.hpp"
+
 #include "whitted/hit.hpp"
 #include "whitted/scene.hpp"
 
@@ -34,23 +36,23 @@ struct EmbreeSettings {
     RTCBuildQuality quality = RTC_BUILD_QUALITY_HIGH;
 };
 
-class EmbreeScene {
+class EmbreeScene final : public RayQueries {
   public:
     /// Builds the Embree scene over `data`'s primitives (which must outlive it). Throws std::runtime_error.
     EmbreeScene(const SceneData& data, const EmbreeSettings& settings);
-    ~EmbreeScene();
+    ~EmbreeScene() override;
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
 
     /// The nearest surface along the ray with 0 < t, as a framework Hit (normals facing the ray).
-    std::optional<Hit> closest_hit(const Ray& ray) const;
+    std::optional<Hit> closest_hit(const Ray& ray) const override;
 
     /// The nearest hits of up to 16 coherent rays (eye rays of a 4 x 4 block) in one
     /// rtcIntersect16 packet query; hits[i] answers rays[i] for i < count.
-    void closest_hits16(const Ray* rays, int count, std::optional<Hit>* hits) const;
+    void closest_hits16(const Ray* rays, int count, std::optional<Hit>* hits) const override;
 
     /// True when a surface lies along the ray with 0 < t < t_max.
-    bool occluded(const Ray& ray, double t_max) const;
+    bool occluded(const Ray& ray, double t_max) const override;
 
     /// Wall-clock seconds that rtcCommitScene (the BVH build) took.
     double build_seconds() const { return build_seconds_; }

@@ -67,7 +67,7 @@ double fresnel_reflectance(double cos_theta_i, double eta_i, double eta_t) {
 // One thread's walk through the ray trees of its pixels.
 class TrafficTracer {
   public:
-    TrafficTracer(const EmbreeScene& scene, const SceneData& data, int max_depth, RayCounts& counts)
+    TrafficTracer(const RayQueries& scene, const SceneData& data, int max_depth, RayCounts& counts)
         : scene_(scene), data_(data), max_depth_(max_depth), counts_(counts) {}
 
     // The eye ray through viewport point (x, y), pixels from the bottom left (as the reference's primary_ray).
@@ -130,7 +130,7 @@ class TrafficTracer {
         }
     }
 
-    const EmbreeScene& scene_;
+    const RayQueries& scene_;
     const SceneData& data_;
     int max_depth_;
     RayCounts& counts_;
@@ -146,7 +146,7 @@ void set_denormals_to_zero() {
 
 } // namespace
 
-TrafficResult shoot_ray_traffic(const EmbreeScene& scene, const SceneData& data, int max_depth, int threads,
+TrafficResult shoot_ray_traffic(const RayQueries& scene, const SceneData& data, int max_depth, int threads,
                                 bool eye_packets) {
     const Camera& camera = data.camera;
     const int tiles_x = (camera.res_x + kTileSize - 1) / kTileSize;

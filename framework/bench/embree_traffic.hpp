@@ -1,5 +1,6 @@
 // The ray traffic of a whitted render, without the shading: the same eye,
-// shadow, reflected and refracted rays, shot into an EmbreeScene.
+// shadow, reflected and refracted rays, shot into an EmbreeScene (or into
+// whitted's own Scene, through the same RayQueries interface).
 //
 // Why: `make bench` compares the renderer with the fastest traversal it could
 // hope for. That comparison is fair only when both shoot exactly the same ray
@@ -35,10 +36,10 @@ struct TrafficResult {
 };
 
 /// Shoots the whole image's ray tree (camera, lights and materials from `data`)
-/// into `scene` with `threads` threads (0: one per hardware thread); the eye ray
+/// into `scene` (Embree's or whitted's) with `threads` threads (0: one per hardware thread); the eye ray
 /// is depth 1. With `eye_packets`, the eye rays of each 4 x 4 pixel block go to
 /// Embree as one coherent packet (rtcIntersect16); every other ray goes alone.
-TrafficResult shoot_ray_traffic(const EmbreeScene& scene, const SceneData& data, int max_depth, int threads,
+TrafficResult shoot_ray_traffic(const RayQueries& scene, const SceneData& data, int max_depth, int threads,
                                 bool eye_packets = false);
 
 } // namespace whitted::bench
