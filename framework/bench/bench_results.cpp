@@ -28,6 +28,7 @@ const ToolStyle& style(Tool tool) {
         {"POV-Ray", "povray", "POV-Ray trace", "#dd6b20"},
         {"Embree", "embree", "Embree (rays only)", "#38a169"},
         {"student", "student", "student build render", "#805ad5"},
+        {"whitted rays only", "whitted_rays", "whitted (rays only)", "#90cdf4"},
     }};
     return kStyles[static_cast<std::size_t>(tool)];
 }

@@ -27,8 +27,10 @@ struct Sample {
 };
 
 /// The programs a benchmark compares, in the order of the reports.
-enum class Tool { whitted, povray, embree, student };
-inline constexpr std::array<Tool, 4> kTools{Tool::whitted, Tool::povray, Tool::embree, Tool::student};
+/// whitted_rays is Embree's ray traffic shot into whitted's own scene: traversal
+/// without shading, to set against Embree's.
+enum class Tool { whitted, povray, embree, student, whitted_rays };
+inline constexpr std::array<Tool, 5> kTools{Tool::whitted, Tool::povray, Tool::embree, Tool::student, Tool::whitted_rays};
 
 /// How the reports name and draw a program.
 struct ToolStyle {
@@ -41,10 +43,10 @@ struct ToolStyle {
 /// The names and colour of `tool`.
 const ToolStyle& style(Tool tool);
 
-/// The name a report shows: "whitted", "POV-Ray", "Embree", "student".
+/// The name a report shows: "whitted", "POV-Ray", "Embree", "student", "whitted rays only".
 inline std::string_view tool_label(Tool tool) { return style(tool).label; }
 
-/// The key in results.json: "whitted", "povray", "embree", "student".
+/// The key in results.json: "whitted", "povray", "embree", "student", "whitted_rays".
 inline std::string_view tool_key(Tool tool) { return style(tool).key; }
 
 /// Every run of one program on one scene.

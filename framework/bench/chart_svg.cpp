@@ -72,8 +72,9 @@ std::string grid(const Axis& axis, double top, double bottom) {
 
 std::string svg_chart(const std::vector<SceneResult>& results, const BenchSettings& settings) {
     std::vector<Tool> tools{Tool::whitted, Tool::povray, Tool::embree};
-    if (std::any_of(results.begin(), results.end(), [](const SceneResult& r) { return r.of(Tool::student).attempted; }))
-        tools.push_back(Tool::student);
+    for (Tool optional : {Tool::whitted_rays, Tool::student})
+        if (std::any_of(results.begin(), results.end(), [&](const SceneResult& r) { return r.of(optional).attempted; }))
+            tools.push_back(optional);
     const double group = tools.size() * (kBar + kBarGap) - kBarGap;
     const double plot_bottom = kTop + results.size() * (group + kGroupGap);
     const double height = plot_bottom + kBottom;

@@ -18,6 +18,7 @@ bool available(Tool tool, const BenchTools& tools) {
     case Tool::povray: return !tools.povray.empty();
     case Tool::embree: return !tools.embree.empty();
     case Tool::student: return !tools.student.empty();
+    case Tool::whitted_rays: return !tools.embree.empty(); // the Embree harness, --engine whitted
     }
     return false;
 }

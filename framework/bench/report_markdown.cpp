@@ -50,6 +50,8 @@ std::string results_table(const std::vector<SceneResult>& results) {
                                     "accel B/prim", "POV-Ray trace s", "whitted ÷ POV-Ray", "Embree s",
                                     "whitted ÷ Embree", "rays whitted", "rays Embree"};
     if (student) header.push_back("student render s");
+    const bool rays_only = std::any_of(results.begin(), results.end(), [](const SceneResult& r) { return r.of(Tool::whitted_rays).attempted; });
+    if (rays_only) header.insert(header.end(), {"whitted rays only s", "rays only ÷ Embree"});
     std::string text = row(header);
     text += row(std::vector<std::string>(header.size(), "---"));
     for (const SceneResult& r : results) {
@@ -71,6 +73,7 @@ std::string results_table(const std::vector<SceneResult>& results) {
             rays_cell(w),
             rays_cell(embree)};
         if (student) cells.push_back(cell(r.of(Tool::student), Metric::render));
+        if (rays_only) cells.insert(cells.end(), {cell(r.of(Tool::whitted_rays), Metric::render), ratio_cell(r.of(Tool::whitted_rays), embree)});
         text += row(cells);
     }
     return text;
@@ -79,7 +82,8 @@ std::string results_table(const std::vector<SceneResult>& results) {
 std::string markdown_report(const std::vector<SceneResult>& results, const BenchSettings& settings) {
     std::string text = "# whitted-bench results\n\n" + settings_line(settings) + ". Times in seconds: median " +
                        "(min–max). whitted: its own load + build and render times; POV-Ray: its trace time (without " +
-                       "its start-up); Embree: the same rays without shading. Ratios below 1 mean whitted is faster.\n\n";
+                       "its start-up); Embree: the same rays without shading; whitted rays only: those rays shot into whitted's own " +
+                       "scene, also without shading. Ratios below 1 mean whitted is faster.\n\n";
     text += results_table(results);
     std::string failures;
     for (const SceneResult& r : results)

@@ -54,6 +54,7 @@ std::string results_json(const std::vector<SceneResult>& results, const BenchSet
         scene["bytes_per_primitive"] = number(bytes_per_primitive(w));
         scene["whitted_over_povray"] = number(ratio(w, r.of(Tool::povray), Metric::render));
         scene["whitted_over_embree"] = number(ratio(w, r.of(Tool::embree), Metric::render));
+        scene["whitted_rays_over_embree"] = number(ratio(r.of(Tool::whitted_rays), r.of(Tool::embree), Metric::render));
         for (Tool tool : kTools)
             if (r.of(tool).attempted) scene[std::string(tool_key(tool))] = series_json(r.of(tool));
         scenes.push_back(scene);

@@ -1,4 +1,5 @@
-// Running whitted, the student build and the Embree harness: all three write
+// Running whitted, the student build and the Embree harness (into Embree, or
+// into whitted's own scene: the rays without shading): all of them write
 // the JSON of `whitted render --stats-json` (parse, build and render seconds,
 // ray counts, primitives, acceleration bytes), which becomes the sample.
 //
@@ -19,9 +20,10 @@ namespace {
 std::vector<std::string> command(Tool tool, const RunPlan& plan, const std::filesystem::path& json) {
     const BenchSettings& s = plan.settings;
     const std::string size = std::to_string(s.size);
-    if (tool == Tool::embree) {
+    if (tool == Tool::embree || tool == Tool::whitted_rays) {
         return {plan.tools.embree.string(), plan.scene.path.string(), "--width", size, "--height", size,
-                "--threads", std::to_string(s.threads), "--max-depth", std::to_string(s.depth), "--json", json.string()};
+                "--threads", std::to_string(s.threads), "--max-depth", std::to_string(s.depth), "--json", json.string(),
+                "--engine", tool == Tool::embree ? "embree" : "whitted"};
     }
     const std::filesystem::path program = tool == Tool::student ? plan.tools.student : plan.tools.whitted;
     const std::string image = plan.scene.name + (tool == Tool::student ? "-student" : "") + ".png";

@@ -53,6 +53,16 @@ TEST(BenchReports, TableShowsMediansRangesRatiosAndGaps) {
     EXPECT_NE(table.find("|  |  | failed | – | 900,000 | failed |"), std::string::npos) << table;
 }
 
+TEST(BenchReports, RaysOnlyColumnsAppearWhenMeasured) {
+    std::vector<SceneResult> results = sample_results();
+    EXPECT_EQ(results_table(results).find("rays only"), std::string::npos);
+    results[0].of(Tool::whitted_rays) = series({0.0946}, 1'490'000, 7383);
+    const std::string table = results_table(results);
+    EXPECT_NE(table.find("| whitted rays only s | rays only ÷ Embree |"), std::string::npos) << table;
+    // flake4: Embree 0.086 s, whitted's queries on the same rays 0.0946 s: 1.10×.
+    EXPECT_NE(table.find("| 1,500,000 | 1,490,000 | 0.0946 | 1.10× |"), std::string::npos) << table;
+}
+
 TEST(BenchReports, ReportListsFailuresScaleAndTargets) {
     const std::string report = markdown_report(sample_results(), BenchSettings{});
     EXPECT_NE(report.find("- Embree on teapot6 exited with code 3"), std::string::npos);
