@@ -4,6 +4,7 @@
 // 3 grader failure (the instructor tree does not build, the rubric is wrong).
 #include "commands.hpp"
 #include "grade/builder.hpp"
+#include "grade/folder_lock.hpp"
 #include "grade/grading.hpp"
 #include "grade/html_report.hpp"
 #include "grade/results_json.hpp"
@@ -13,11 +14,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fcntl.h>
 #include <fstream>
 #include <memory>
-#include <sys/file.h>
-#include <unistd.h>
 
 namespace whitted {
 namespace {
@@ -64,19 +62,6 @@ void write_file(const fs::path& file, const std::string& text) {
     if (!stream.flush()) throw GraderFailure("cannot write " + file.string());
 }
 
-// Holds an exclusive lock on a build cache, so two graders never build in it at once.
-struct CacheLock {
-    int fd = -1;
-    explicit CacheLock(const fs::path& folder) {
-        fs::create_directories(folder);
-        fd = open((folder / ".whitted-grade.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-        if (fd >= 0) flock(fd, LOCK_EX);
-    }
-    ~CacheLock() {
-        if (fd >= 0) close(fd);
-    }
-};
-
 void print_table(const GradingResult& result, const fs::path& out) {
     std::printf("%-15s %7s / %-7s %s\n", "lab", "points", "max", "tests");
     for (const LabResult& lab : result.labs) std::printf("%s\n", lab_summary_line(lab).c_str());
@@ -122,8 +107,8 @@ int run_grade(const GradeOptions& options) {
         std::vector<std::string> known = labs;
         known.push_back("integration");
         setup.rubric = load_rubric(options.rubric.empty() ? setup.instructor_tree / "tests" / "rubric.json" : fs::path(options.rubric), known);
-        std::unique_ptr<CacheLock> lock;
-        if (!options.build_cache.empty()) lock = std::make_unique<CacheLock>(setup.build);
+        std::unique_ptr<FolderLock> lock;
+        if (!options.build_cache.empty()) lock = std::make_unique<FolderLock>(setup.build);
         result = grade_submission(setup);
         code = result.max_cents > 0 && result.score_cents == result.max_cents ? 0 : 1;
     } catch (const std::exception& error) { // RubricError, GraderFailure, file system errors
