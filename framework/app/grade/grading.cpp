@@ -30,6 +30,7 @@ public:
             targets.push_back("reference_" + lab.lab);
             targets.push_back("labtests_" + lab.lab);
         }
+        targets.push_back("labtests_integration");
         setup_.progress("building the framework, the reference and the tests");
         const BuildStep built = build_targets(folder_, targets);
         if (!built.ok) throw GraderFailure("building the instructor tree failed:\n" + first_compiler_errors(built.log, paths_));
