@@ -2,8 +2,8 @@
 //
 // Why: two graders may run at once (one per terminal, or a batch script and an
 // instructor), and CMake and the build tools do not expect two builds in one
-// folder at the same time. Each grader takes the lock of a folder it shares with
-// others before it builds there: its --build-cache.
+// folder at the same time. Each grader takes the lock of a folder it builds in:
+// its --build-cache, and the instructor build whose shared parts it imports.
 #pragma once
 
 #include <filesystem>

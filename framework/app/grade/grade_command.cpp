@@ -28,6 +28,8 @@ struct GradeOptions {
     std::string out = "grading";
     std::string instructor_tree = WHITTED_INSTRUCTOR_TREE;
     std::string build_cache;
+    std::string prebuilt = WHITTED_INSTRUCTOR_BUILD;
+    bool no_prebuilt = false;
     std::string rubric;
     int jobs = 2;
     double timeout = 20.0;
@@ -88,7 +90,10 @@ int run_grade(const GradeOptions& options) {
         const fs::path source = configured_source(setup.build);
         if (!source.empty() && fs::weakly_canonical(source) != setup.instructor_tree)
             throw UsageError("the build cache " + setup.build.string() + " was configured from " + source.string());
+        if (!source.empty() && cache_entry(setup.build, "WHITTED_GRADING") != "ON")
+            throw UsageError("the build cache " + setup.build.string() + " is not a grading build (an instructor's build?)");
     }
+    if (!options.no_prebuilt) setup.prebuilt = fs::weakly_canonical(fs::absolute(options.prebuilt));
     fs::create_directories(setup.out);
     write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/, tests/ and build/ here\n");
     if (options.build_cache.empty()) fs::remove_all(setup.build);
@@ -137,6 +142,12 @@ Command add_grade_command(CLI::App& app) {
     command->add_option("--instructor-tree", options->instructor_tree, "The tree with solution/ and the tests (default: the one whitted was built from)")
         ->check(CLI::ExistingDirectory);
     command->add_option("--build-cache", options->build_cache, "Reuse this build folder between submissions: only the student's files recompile");
+    CLI::Option* no_prebuilt = command->add_flag("--no-prebuilt", options->no_prebuilt,
+                                                 "Compile the framework, reference labs and lab tests for this grading instead of importing them");
+    command->add_option("--prebuilt", options->prebuilt,
+                        "The instructor build to import those from, brought up to date first (default: the one whitted was built in)")
+        ->check(CLI::ExistingDirectory)
+        ->excludes(no_prebuilt);
     command->add_option("--rubric", options->rubric, "Rubric file (default: <instructor tree>/tests/rubric.json)")->check(CLI::ExistingFile);
     command->add_option("-j,--jobs", options->jobs, "Parallel compile jobs (default 2)")->check(CLI::Range(1, 64));
     command->add_option("--timeout", options->timeout, "Wall-clock seconds per test; CPU time may be twice that (default 20)")
