@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end check of `whitted grade` (CI, after `make test`). Grades:
-#   reference  the reference solution as a submission: full marks, twice (cold,
-#              then with --build-cache) with byte-identical results.json;
+#   reference  the reference solution as a submission: full marks, three times
+#              with byte-identical results.json: cold (importing the shared
+#              parts from the instructor build), again with --build-cache, and
+#              with --no-prebuilt (everything compiled for this grading);
 #   stubs      the untouched stubs: 0 points, every test not implemented or
 #              skipped for a failed prerequisite;
 #   broken     the reference with a compile error in lab 3, a segfault in lab 2
@@ -100,20 +102,25 @@ EOF
 
 labs="01_ray_casting 02_shadows 03_blinn_phong 04_reflection 05_refraction 06_fresnel"
 
-# (a) The reference solution, as a student tree: cold, then again through a build cache.
+# (a) The reference solution, as a student tree: cold, then again through a
+# build cache, then compiling everything (the fallback when the instructor
+# build cannot be imported from).
 mkdir -p "$work/reference-tree"
 cp -r solution "$work/reference-tree/labs"
 grade reference-cold "$work/reference-tree" 0 --build-cache "$work/cache"
 grade reference-cached "$work/reference-tree/labs" 0 --build-cache "$work/cache"
+grade reference-full "$work/reference-tree" 0 --no-prebuilt
 check reference-cold 'ok(results["score"] == 100, "score " + str(results["score"]) + ", expected 100")
 ok(all(t["status"] == "passed" for t in results["tests"]), "a test did not pass")'
-if cmp -s "$work/reference-cold/results.json" "$work/reference-cached/results.json"; then
-    echo "ok   results.json is byte-identical for the same submission"
-else
-    echo "FAIL results.json differs between two gradings of the same submission"
-    diff "$work/reference-cold/results.json" "$work/reference-cached/results.json" | head -20
-    failures=$((failures + 1))
-fi
+for again in reference-cached reference-full; do
+    if cmp -s "$work/reference-cold/results.json" "$work/$again/results.json"; then
+        echo "ok   results.json is byte-identical for the same submission ($again)"
+    else
+        echo "FAIL results.json differs between two gradings of the same submission ($again)"
+        diff "$work/reference-cold/results.json" "$work/$again/results.json" | head -20
+        failures=$((failures + 1))
+    fi
+done
 
 # (b) The untouched stubs.
 mkdir -p "$work/stub-tree"

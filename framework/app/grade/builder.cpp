@@ -30,18 +30,24 @@ bool has_ninja() {
 
 } // namespace
 
-std::filesystem::path configured_source(const std::filesystem::path& build) {
+std::string cache_entry(const std::filesystem::path& build, const std::string& name) {
     std::ifstream cache(build / "CMakeCache.txt");
-    const std::string key = "CMAKE_HOME_DIRECTORY:INTERNAL=";
-    for (std::string line; std::getline(cache, line);)
-        if (line.rfind(key, 0) == 0) return line.substr(key.size());
+    for (std::string line; std::getline(cache, line);) {
+        // NAME:TYPE=VALUE
+        const std::size_t colon = line.find(':'), equals = line.find('=');
+        if (colon == name.size() && equals != std::string::npos && equals > colon && line.compare(0, colon, name) == 0)
+            return line.substr(equals + 1);
+    }
     return {};
 }
 
+std::filesystem::path configured_source(const std::filesystem::path& build) { return cache_entry(build, "CMAKE_HOME_DIRECTORY"); }
+
 BuildStep configure(const BuildFolder& folder) {
     std::vector<std::string> arguments = {"-S", folder.instructor_tree.string(), "-B", folder.build.string(),
-                                          "-DCMAKE_BUILD_TYPE=Release", "-DWHITTED_GRADING=ON", "-DBUILD_TESTING=OFF",
-                                          "-DWHITTED_LABS_DIR=" + folder.labs.string()};
+                                          std::string("-DCMAKE_BUILD_TYPE=") + grading_build_type, "-DWHITTED_GRADING=ON", "-DBUILD_TESTING=OFF",
+                                          "-DWHITTED_LABS_DIR=" + folder.labs.string(),
+                                          "-DWHITTED_GRADING_PREBUILT=" + folder.prebuilt.string()};
     if (configured_source(folder.build).empty() && has_ninja()) arguments.insert(arguments.begin(), {"-G", "Ninja"});
     return run_cmake(folder, arguments);
 }

@@ -16,6 +16,7 @@ struct BuildFolder {
     std::filesystem::path labs;            // the copied lab files: WHITTED_LABS_DIR
     int jobs = 2;
     double timeout_seconds = 900;          // per CMake call
+    std::filesystem::path prebuilt;        // an instructor build to import the shared parts from, or empty (prebuilt.hpp)
 };
 
 struct BuildStep {
@@ -23,7 +24,8 @@ struct BuildStep {
     std::string log; // what CMake and the compiler printed (the start of it)
 };
 
-/// Configures (or re-configures) the build folder. Uses Ninja for a new folder when it is installed.
+/// Configures (or re-configures) the build folder, importing the shared parts from
+/// `prebuilt` when set. Uses Ninja for a new folder when it is installed.
 BuildStep configure(const BuildFolder& folder);
 
 /// Builds the targets.
@@ -35,5 +37,11 @@ std::string first_compiler_errors(const std::string& log, const std::vector<std:
 
 /// The folder a CMake build folder was configured from, or empty if it has no CMakeCache.txt.
 std::filesystem::path configured_source(const std::filesystem::path& build);
+
+/// The value of a CMake cache entry ("WHITTED_GRADING" gives "ON"), or empty when there is none.
+std::string cache_entry(const std::filesystem::path& build, const std::string& name);
+
+/// The CMAKE_BUILD_TYPE of every grading build.
+inline constexpr const char* grading_build_type = "Release";
 
 } // namespace whitted::grade

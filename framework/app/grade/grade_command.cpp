@@ -4,6 +4,7 @@
 // 3 grader failure (the instructor tree does not build, the rubric is wrong).
 #include "commands.hpp"
 #include "grade/builder.hpp"
+#include "grade/folder_lock.hpp"
 #include "grade/grading.hpp"
 #include "grade/html_report.hpp"
 #include "grade/results_json.hpp"
@@ -13,11 +14,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fcntl.h>
 #include <fstream>
 #include <memory>
-#include <sys/file.h>
-#include <unistd.h>
 
 namespace whitted {
 namespace {
@@ -30,6 +28,8 @@ struct GradeOptions {
     std::string out = "grading";
     std::string instructor_tree = WHITTED_INSTRUCTOR_TREE;
     std::string build_cache;
+    std::string prebuilt = WHITTED_INSTRUCTOR_BUILD;
+    bool no_prebuilt = false;
     std::string rubric;
     int jobs = 2;
     double timeout = 20.0;
@@ -64,19 +64,6 @@ void write_file(const fs::path& file, const std::string& text) {
     if (!stream.flush()) throw GraderFailure("cannot write " + file.string());
 }
 
-// Holds an exclusive lock on a build cache, so two graders never build in it at once.
-struct CacheLock {
-    int fd = -1;
-    explicit CacheLock(const fs::path& folder) {
-        fs::create_directories(folder);
-        fd = open((folder / ".whitted-grade.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-        if (fd >= 0) flock(fd, LOCK_EX);
-    }
-    ~CacheLock() {
-        if (fd >= 0) close(fd);
-    }
-};
-
 void print_table(const GradingResult& result, const fs::path& out) {
     std::printf("%-15s %7s / %-7s %s\n", "lab", "points", "max", "tests");
     for (const LabResult& lab : result.labs) std::printf("%s\n", lab_summary_line(lab).c_str());
@@ -103,7 +90,10 @@ int run_grade(const GradeOptions& options) {
         const fs::path source = configured_source(setup.build);
         if (!source.empty() && fs::weakly_canonical(source) != setup.instructor_tree)
             throw UsageError("the build cache " + setup.build.string() + " was configured from " + source.string());
+        if (!source.empty() && cache_entry(setup.build, "WHITTED_GRADING") != "ON")
+            throw UsageError("the build cache " + setup.build.string() + " is not a grading build (an instructor's build?)");
     }
+    if (!options.no_prebuilt) setup.prebuilt = fs::weakly_canonical(fs::absolute(options.prebuilt));
     fs::create_directories(setup.out);
     write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/, tests/ and build/ here\n");
     if (options.build_cache.empty()) fs::remove_all(setup.build);
@@ -122,8 +112,8 @@ int run_grade(const GradeOptions& options) {
         std::vector<std::string> known = labs;
         known.push_back("integration");
         setup.rubric = load_rubric(options.rubric.empty() ? setup.instructor_tree / "tests" / "rubric.json" : fs::path(options.rubric), known);
-        std::unique_ptr<CacheLock> lock;
-        if (!options.build_cache.empty()) lock = std::make_unique<CacheLock>(setup.build);
+        std::unique_ptr<FolderLock> lock;
+        if (!options.build_cache.empty()) lock = std::make_unique<FolderLock>(setup.build);
         result = grade_submission(setup);
         code = result.max_cents > 0 && result.score_cents == result.max_cents ? 0 : 1;
     } catch (const std::exception& error) { // RubricError, GraderFailure, file system errors
@@ -152,6 +142,12 @@ Command add_grade_command(CLI::App& app) {
     command->add_option("--instructor-tree", options->instructor_tree, "The tree with solution/ and the tests (default: the one whitted was built from)")
         ->check(CLI::ExistingDirectory);
     command->add_option("--build-cache", options->build_cache, "Reuse this build folder between submissions: only the student's files recompile");
+    CLI::Option* no_prebuilt = command->add_flag("--no-prebuilt", options->no_prebuilt,
+                                                 "Compile the framework, reference labs and lab tests for this grading instead of importing them");
+    command->add_option("--prebuilt", options->prebuilt,
+                        "The instructor build to import those from, brought up to date first (default: the one whitted was built in)")
+        ->check(CLI::ExistingDirectory)
+        ->excludes(no_prebuilt);
     command->add_option("--rubric", options->rubric, "Rubric file (default: <instructor tree>/tests/rubric.json)")->check(CLI::ExistingFile);
     command->add_option("-j,--jobs", options->jobs, "Parallel compile jobs (default 2)")->check(CLI::Range(1, 64));
     command->add_option("--timeout", options->timeout, "Wall-clock seconds per test; CPU time may be twice that (default 20)")

@@ -1,5 +1,6 @@
 #include "grade/grading.hpp"
 #include "grade/builder.hpp"
+#include "grade/prebuilt.hpp"
 #include "grade/submission.hpp"
 #include "grade/test_runner.hpp"
 #include "grade/text.hpp"
@@ -14,24 +15,36 @@ namespace fs = std::filesystem;
 
 bool is_lab(const std::string& name) { return name != "integration"; }
 
+// The grading build folder; the prebuilt parts are added once they are known to be usable.
+BuildFolder shared_build_folder(const GradingSetup& setup) {
+    BuildFolder folder;
+    folder.instructor_tree = setup.instructor_tree;
+    folder.build = setup.build;
+    folder.labs = setup.out / "labs";
+    folder.jobs = setup.jobs;
+    return folder;
+}
+
 class LabGrader {
 public:
     LabGrader(const GradingSetup& setup, const std::vector<std::string>& missing)
-        : setup_(setup), missing_(missing), folder_{setup.instructor_tree, setup.build, setup.out / "labs", setup.jobs},
+        : setup_(setup), missing_(missing), folder_(shared_build_folder(setup)),
           paths_(shown_paths(setup)) {}
 
+    // The framework, the reference labs and the lab tests: imported from the instructor build when it can be, else compiled here.
     void build_shared_parts() {
+        if (!setup_.prebuilt.empty()) {
+            setup_.progress("updating the shared parts in " + setup_.prebuilt.string());
+            const PrebuiltCheck prebuilt = update_prebuilt(setup_.prebuilt, setup_.instructor_tree, setup_.jobs);
+            if (prebuilt.usable) folder_.prebuilt = setup_.prebuilt;
+            else setup_.progress("not importing them: " + prebuilt.reason);
+        }
         setup_.progress("configuring " + setup_.build.string());
         const BuildStep configured = configure(folder_);
         if (!configured.ok) throw GraderFailure("configuring the instructor tree failed:\n" + trim_text(configured.log, 40));
-        std::vector<std::string> targets = {"test_support"};
-        for (const LabRubric& lab : setup_.rubric.labs) {
-            if (!is_lab(lab.lab)) continue;
-            targets.push_back("reference_" + lab.lab);
-            targets.push_back("labtests_" + lab.lab);
-        }
-        setup_.progress("building the framework, the reference and the tests");
-        const BuildStep built = build_targets(folder_, targets);
+        for (const std::string& note : split_lines(prebuilt_notes(configured.log))) setup_.progress(note);
+        setup_.progress("building the shared parts that are not imported: the framework, the reference, the tests");
+        const BuildStep built = build_targets(folder_, {"grading_shared_parts"});
         if (!built.ok) throw GraderFailure("building the instructor tree failed:\n" + first_compiler_errors(built.log, paths_));
     }
 
@@ -150,10 +163,13 @@ private:
 } // namespace
 
 std::vector<std::pair<std::string, std::string>> shown_paths(const GradingSetup& setup) {
-    return {{(setup.out / "labs").string() + "/", "labs/"},
-            {setup.out.string() + "/", ""},
-            {setup.build.string() + "/", "build/"},
-            {setup.instructor_tree.string() + "/", ""}};
+    std::vector<std::pair<std::string, std::string>> paths = {{(setup.out / "labs").string() + "/", "labs/"},
+                                                              {setup.out.string() + "/", ""},
+                                                              {setup.build.string() + "/", "build/"},
+                                                              {setup.instructor_tree.string() + "/", ""}};
+    // Imported objects named in a link error look as if the grading build had compiled them.
+    if (!setup.prebuilt.empty()) paths.emplace_back(setup.prebuilt.string() + "/", "build/");
+    return paths;
 }
 
 GradingResult grade_submission(const GradingSetup& setup) {

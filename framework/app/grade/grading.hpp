@@ -25,6 +25,7 @@ struct GradingSetup {
     std::filesystem::path submission_labs; // where the submission's lab files are
     std::filesystem::path out;             // absolute; labs/ and tests/ are written here
     std::filesystem::path build;           // absolute; out/build or a reused cache
+    std::filesystem::path prebuilt;        // absolute; the instructor build to import the shared parts from, or empty
     Rubric rubric;
     Limits test_limits;
     int jobs = 2;
