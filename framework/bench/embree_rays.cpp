@@ -25,6 +25,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <utility>
 #include <optional>
 #include <string>
 #include <vector>
@@ -69,24 +70,23 @@ int run(const Options& options) {
     settings.build_threads = options.threads;
     settings.quality = qualities.at(options.quality);
     // The engine the rays go to, and its name and build time for the report.
-    std::unique_ptr<const whitted::bench::EmbreeScene> embree;
-    std::unique_ptr<const whitted::Scene> own;
-    std::unique_ptr<const whitted::bench::RayQueries> own_queries;
+    const bool embree = options.engine == "embree";
+    std::unique_ptr<const whitted::bench::RayQueries> queries;
     double build_seconds = 0.0;
     std::string renderer;
-    if (options.engine == "embree") {
-        embree = std::make_unique<const whitted::bench::EmbreeScene>(data, settings);
-        build_seconds = embree->build_seconds();
+    if (embree) {
+        auto embree_scene = std::make_unique<const whitted::bench::EmbreeScene>(data, settings);
+        build_seconds = embree_scene->build_seconds();
+        queries = std::move(embree_scene);
         renderer = whitted::bench::EmbreeScene::version() +
                    (options.eye_packets ? " rtcIntersect16 eye packets, rtcIntersect1/rtcOccluded1" : " rtcIntersect1/rtcOccluded1");
     } else {
         const auto build_start = std::chrono::steady_clock::now();
-        own = std::make_unique<const whitted::Scene>(data, whitted::linked_leaf_kernels());
+        queries = std::make_unique<const whitted::bench::SceneQueries>(data, whitted::linked_leaf_kernels());
         build_seconds = seconds_since(build_start);
-        own_queries = std::make_unique<const whitted::bench::SceneQueries>(*own);
         renderer = whitted::linked_leaf_kernels() ? "whitted Scene, reference leaf kernels" : "whitted Scene, labs' code";
     }
-    const whitted::bench::RayQueries& scene = embree ? static_cast<const whitted::bench::RayQueries&>(*embree) : *own_queries;
+    const whitted::bench::RayQueries& scene = *queries;
 
     std::vector<double> runs;
     whitted::bench::TrafficResult result;

@@ -11,6 +11,7 @@
 #include "whitted/scene.hpp"
 
 #include <optional>
+#include <utility>
 
 namespace whitted::bench {
 
@@ -30,15 +31,15 @@ class RayQueries {
     }
 };
 
-/// whitted's own Scene (with whatever leaf kernels it was built with) behind the interface.
+/// whitted's own Scene, built over `data` with the given leaf kernels, behind the interface.
 class SceneQueries final : public RayQueries {
   public:
-    explicit SceneQueries(const Scene& scene) : scene_(scene) {}
+    SceneQueries(SceneData data, const LeafKernels* kernels) : scene_(std::move(data), kernels) {}
     std::optional<Hit> closest_hit(const Ray& ray) const override { return scene_.closest_hit(ray); }
     bool occluded(const Ray& ray, double t_max) const override { return scene_.occluded(ray, Interval{0.0, t_max}); }
 
   private:
-    const Scene& scene_;
+    Scene scene_;
 };
 
 } // namespace whitted::bench
