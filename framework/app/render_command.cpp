@@ -55,6 +55,12 @@ std::string check_output_path(const std::string& path) {
         return "the image must end in .png, .ppm or .pfm: " + path;
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     if (!folder.empty() && !std::filesystem::is_directory(folder)) return "no such folder for the image: " + folder.string();
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) return "the image is a folder: " + path;
+    // Found now rather than after the whole render.
+    const bool exists = std::filesystem::exists(path, error);
+    if (access(exists ? path.c_str() : (folder.empty() ? "." : folder.c_str()), W_OK) != 0)
+        return "cannot write the image (no permission): " + path;
     return {};
 }
 
@@ -138,6 +144,12 @@ int run_render(const RenderOptions& options) {
     LoadedScene loaded = load_scene(options.scene);
     for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
     auto [width, height] = output_size(loaded.data.camera, options);
+    // One of --width/--height with the scene's aspect ratio can ask for a huge other side.
+    if (width > 16384 || height > 16384 || static_cast<std::size_t>(width) * height > SceneLimits{}.max_pixels) {
+        std::fprintf(stderr, "whitted: the image would be %d x %d pixels; the limit is 16384 per side and %zu in all\n",
+                     width, height, SceneLimits{}.max_pixels);
+        return 2;
+    }
     loaded.data.camera = loaded.data.camera.with_resolution(width, height);
     // Scene errors come first: they are the user's to fix whatever the labs' state.
     const std::optional<int> stage = choose_stage(options);

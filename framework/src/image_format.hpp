@@ -1,10 +1,13 @@
-// Internal to image.cpp and image_read.cpp: which file format a path names.
+// Internal to image.cpp and image_read.cpp (and the image fuzz target): which
+// file format a path names, and decoding a file held in memory.
 #pragma once
 
 #include "whitted/image.hpp"
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace whitted::detail {
 
@@ -12,6 +15,16 @@ enum class ImageFormat { png, ppm, pfm };
 
 /// The format named by the path's extension (case-insensitive); throws ImageError for any other.
 ImageFormat image_format(const std::filesystem::path& path);
+
+/// Images larger than this many pixels are refused before anything is allocated
+/// (8192 x 8192: 1.5 GiB of linear colour). Renders obey the same limit.
+inline constexpr std::size_t kMaxImagePixels = std::size_t{1} << 26;
+
+/// Decodes a whole image file held in memory; `path` names it in messages.
+/// Throws ImageError for a malformed file, more than `max_pixels` pixels or a
+/// non-finite PFM value.
+Image decode_image(std::string_view bytes, ImageFormat format, const std::filesystem::path& path,
+                   std::size_t max_pixels = kMaxImagePixels);
 
 /// "path: what" as an ImageError, the one shape of every image error message.
 ImageError image_error(const std::filesystem::path& path, const std::string& what);

@@ -24,11 +24,16 @@ namespace {
 using detail::image_error;
 
 constexpr int kMaxSide = 1 << 15;
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{2} << 30;
 
 /// The whole file as bytes.
 std::string read_file(const std::filesystem::path& path) {
     std::error_code error;
     if (std::filesystem::is_directory(path, error)) throw image_error(path, "is a directory, not an image file");
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+        throw image_error(path, "is not a regular file");
+    if (const std::uintmax_t size = std::filesystem::file_size(path, error); !error && size > kMaxFileBytes)
+        throw image_error(path, "is larger than the 2 GiB an image file may have");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw image_error(path, "cannot open for reading");
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -111,10 +116,19 @@ struct Size {
     std::size_t pixels() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
 };
 
-/// Reads width and height, each in 1..kMaxSide.
-Size read_size(HeaderReader& header) {
+/// Throws unless the image has at most `max_pixels` pixels.
+void check_pixel_count(Size size, std::size_t max_pixels, const std::filesystem::path& path) {
+    if (size.pixels() > max_pixels) {
+        throw image_error(path, "image size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
+                                    " has more than the " + std::to_string(max_pixels) + " pixels allowed");
+    }
+}
+
+/// Reads width and height, each in 1..kMaxSide, and checks their product.
+Size read_size(HeaderReader& header, std::size_t max_pixels, const std::filesystem::path& path) {
     const int width = static_cast<int>(header.integer("width", 1, kMaxSide));
     const int height = static_cast<int>(header.integer("height", 1, kMaxSide));
+    check_pixel_count({width, height}, max_pixels, path);
     return {width, height};
 }
 
@@ -127,11 +141,11 @@ void require_bytes(std::size_t available, std::size_t needed, const std::filesys
 }
 
 /// Reads a PPM, P6 (binary, 16-bit big-endian when maxval > 255) or P3 (ASCII), as v / maxval.
-Image read_ppm(std::string_view bytes, const std::filesystem::path& path) {
+Image read_ppm(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
     HeaderReader header(bytes, path);
     const std::string_view magic = header.token("the magic number P6 or P3");
     if (magic != "P6" && magic != "P3") throw image_error(path, "not a PPM file (magic number is not P6 or P3)");
-    const Size size = read_size(header);
+    const Size size = read_size(header, max_pixels, path);
     const long maxval = header.integer("maxval", 1, 65535);
     const std::size_t samples = size.pixels() * 3;
     // Each ASCII sample takes a digit and a separator; each binary one 1 or 2 bytes.
@@ -158,12 +172,12 @@ Image read_ppm(std::string_view bytes, const std::filesystem::path& path) {
 }
 
 /// Reads a PFM, "PF" (RGB) or "Pf" (grey), either byte order, bottom row first.
-Image read_pfm(std::string_view bytes, const std::filesystem::path& path) {
+Image read_pfm(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
     HeaderReader header(bytes, path);
     const std::string_view magic = header.token("the magic number PF or Pf");
     if (magic != "PF" && magic != "Pf") throw image_error(path, "not a PFM file (magic number is not PF or Pf)");
     const int channels = magic == "PF" ? 3 : 1;
-    const Size size = read_size(header);
+    const Size size = read_size(header, max_pixels, path);
     // A negative scale means little-endian floats, a positive one big-endian.
     const bool little_endian = header.real("scale") < 0.0;
     const std::string_view data = header.binary_data();
@@ -179,6 +193,10 @@ Image read_pfm(std::string_view bytes, const std::filesystem::path& path) {
                     bits = (bits << 8) | byte;
                 }
                 const double value = std::bit_cast<float>(bits);
+                if (!std::isfinite(value)) {
+                    throw image_error(path, "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                                ") is not a finite number");
+                }
                 if (channels == 1) image.at(x, y) = Color(value);
                 else image.at(x, y)[k] = value;
             }
@@ -194,7 +212,7 @@ std::string stb_reason() {
 }
 
 /// Reads a PNG of any bit depth and channel count as 8-bit RGB, v / 255.
-Image read_png(std::string_view bytes, const std::filesystem::path& path) {
+Image read_png(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
     static constexpr std::string_view signature("\x89PNG\r\n\x1a\n", 8);
     if (!bytes.starts_with(signature)) throw image_error(path, "not a PNG file (bad signature)");
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw image_error(path, "PNG file too large");
@@ -209,6 +227,7 @@ Image read_png(std::string_view bytes, const std::filesystem::path& path) {
         throw image_error(path, "image size " + std::to_string(width) + "x" + std::to_string(height) +
                                     " outside 1.." + std::to_string(kMaxSide) + " per side");
     }
+    check_pixel_count({width, height}, max_pixels, path);
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(data, size, &width, &height, &channels, 3), stbi_image_free);
     if (!pixels) throw image_error(path, "cannot decode PNG (" + stb_reason() + ")");
@@ -221,16 +240,20 @@ Image read_png(std::string_view bytes, const std::filesystem::path& path) {
 
 } // namespace
 
-Image read_image(const std::filesystem::path& path) {
-    const detail::ImageFormat format = detail::image_format(path);
-    const std::string bytes = read_file(path);
+Image detail::decode_image(std::string_view bytes, ImageFormat format, const std::filesystem::path& path,
+                           std::size_t max_pixels) {
     if (bytes.empty()) throw image_error(path, "empty file");
     switch (format) {
-    case detail::ImageFormat::png: return read_png(bytes, path);
-    case detail::ImageFormat::ppm: return read_ppm(bytes, path);
-    case detail::ImageFormat::pfm: return read_pfm(bytes, path);
+    case ImageFormat::png: return read_png(bytes, path, max_pixels);
+    case ImageFormat::ppm: return read_ppm(bytes, path, max_pixels);
+    case ImageFormat::pfm: return read_pfm(bytes, path, max_pixels);
     }
     throw image_error(path, "unknown image format");
+}
+
+Image read_image(const std::filesystem::path& path) {
+    const detail::ImageFormat format = detail::image_format(path);
+    return detail::decode_image(read_file(path), format, path);
 }
 
 } // namespace whitted

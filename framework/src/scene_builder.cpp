@@ -95,6 +95,10 @@ Viewpoint SceneBuilder::read_viewpoint(const Token& keyword) {
     view.res_x = static_cast<int>(resolution.integer("the image width", 1, limits_.max_resolution));
     view.res_y = static_cast<int>(resolution.integer("the image height", 1, limits_.max_resolution));
     view.res_y_token = resolution.last();
+    if (static_cast<std::size_t>(view.res_x) * static_cast<std::size_t>(view.res_y) > limits_.max_pixels)
+        tokens_.fail(view.res_y_token, "expected an image of at most " + std::to_string(limits_.max_pixels) +
+                                           " pixels, found " + std::to_string(view.res_x) + " x " +
+                                           std::to_string(view.res_y));
 
     // The frame must exist: eye and at apart, up neither zero nor along the view direction.
     const Vec3 backwards = view.from - view.at;

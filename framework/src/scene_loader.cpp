@@ -32,6 +32,11 @@ LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& lim
     } else if (extension != ".nff") {
         throw SceneError(name + ": unknown scene format '" + path.extension().string() + "' (expected .nff or .p3f)");
     }
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+        throw SceneError(name + ": not a regular file (a device, pipe or socket cannot be a scene file)");
+    if (const std::uintmax_t size = std::filesystem::file_size(path, error); !error && size > limits.max_file_bytes)
+        throw SceneError(name + ": the file has " + std::to_string(size) + " bytes, more than the " +
+                         std::to_string(limits.max_file_bytes) + " a scene file may have");
     std::ifstream file(path, std::ios::binary);
     if (!file) throw SceneError(name + ": cannot open the file (missing or unreadable)");
     std::ostringstream text;
@@ -42,7 +47,10 @@ LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& lim
 
 LoadedScene parse_scene(std::string_view text, Dialect dialect, std::string_view file_name,
                         const SceneLimits& limits) {
-    detail::TokenStream tokens(text, file_name);
+    if (text.size() > limits.max_file_bytes)
+        throw SceneError(std::string(file_name) + ": the file has " + std::to_string(text.size()) +
+                         " bytes, more than the " + std::to_string(limits.max_file_bytes) + " a scene file may have");
+    detail::TokenStream tokens(text, file_name, limits.max_token_length);
     return dialect == Dialect::nff ? detail::parse_nff(tokens, limits) : detail::parse_p3f(tokens, limits);
 }
 

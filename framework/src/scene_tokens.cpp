@@ -93,8 +93,8 @@ std::string describe(const Token& token) {
     return quoted(std::string_view(shown));
 }
 
-TokenStream::TokenStream(std::string_view text, std::string_view file_name)
-    : text_(text), file_name_(file_name) {
+TokenStream::TokenStream(std::string_view text, std::string_view file_name, std::size_t max_token_length)
+    : text_(text), file_name_(file_name), max_token_length_(max_token_length) {
     // Editors on some systems start UTF-8 files with a byte-order mark: skip it.
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
 }
@@ -129,6 +129,9 @@ Token TokenStream::scan() {
     const std::size_t start = pos_;
     while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '#') ++pos_, ++column_;
     token.text = text_.substr(start, pos_ - start);
+    if (token.text.size() > max_token_length_)
+        fail(token, "expected a word or number of at most " + std::to_string(max_token_length_) +
+                        " characters, found one of " + std::to_string(token.text.size()) + " (is this a scene file?)");
     last_end_ = Token{{}, line_, column_};
     return token;
 }

@@ -38,7 +38,8 @@ std::string describe(const Token& token);
 /// Splits scene text into tokens; `#` starts a comment that runs to the end of the line.
 class TokenStream {
   public:
-    TokenStream(std::string_view text, std::string_view file_name);
+    /// Words longer than `max_token_length` characters are an error.
+    TokenStream(std::string_view text, std::string_view file_name, std::size_t max_token_length = 1024);
 
     /// The next token, left in the stream.
     const Token& peek();
@@ -60,6 +61,7 @@ class TokenStream {
 
     std::string_view text_;
     std::string file_name_;
+    std::size_t max_token_length_;
     std::size_t pos_ = 0;
     int line_ = 1;
     int column_ = 1;

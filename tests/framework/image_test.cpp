@@ -223,7 +223,13 @@ TEST_F(ImageFiles, MalformedFilesGiveImageErrorsThatSayWhy) {
     expect_error(raw("header.ppm", "P6\n2"), "truncated");
     expect_error(raw("zero.ppm", "P6\n0 1\n255\n"), "width");
     expect_error(raw("huge.ppm", "P6\n40000 40000\n255\n"), "width");
-    expect_error(raw("huge.pfm", "PF\n32768 32768\n-1.0\n1234"), "truncated");
+    // 32768 x 32768 is within the per-side limit but over 2^26 pixels: refused before any allocation.
+    expect_error(raw("huge.pfm", "PF\n32768 32768\n-1.0\n1234"), "more than the 67108864 pixels allowed");
+    expect_error(raw("long.pfm", "PF\n8193 8192\n-1.0\n1234"), "more than the 67108864 pixels allowed");
+    // 0x7FC00000 is a float NaN, 0x7F800000 infinity (big-endian, scale 1.0).
+    expect_error(raw("nan.pfm", std::string("Pf\n2 1\n1.0\n") + std::string("\x3F\0\0\0\x7F\xC0\0\0", 8)),
+                 "pixel (1, 0) is not a finite number");
+    expect_error(raw("inf.pfm", std::string("Pf\n1 1\n1.0\n") + std::string("\x7F\x80\0\0", 4)), "not a finite number");
     expect_error(raw("maxval.ppm", "P6\n1 1\n70000\n123456"), "maxval");
     expect_error(raw("sample.ppm", "P3\n1 1\n4\n1 2 5\n"), "exceeds maxval");
     expect_error(raw("scale.pfm", "PF\n1 1\n0.0\n" + std::string(12, '\0')), "scale");

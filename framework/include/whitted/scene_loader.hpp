@@ -29,10 +29,14 @@ struct LoadedScene {
     std::vector<std::string> warnings; // one line each, "file:line:col: warning: ..."
 };
 
-/// Hard limits that keep hostile files from exhausting the machine.
+/// Hard limits that keep hostile files from exhausting the machine. Numbers
+/// must also be finite and within +-1e15, and `maxdepth` at most 100.
 struct SceneLimits {
-    int max_resolution = 16384;          // per side
-    std::size_t max_primitives = 10'000'000;      // about 2.6 GB of scene at most
+    std::size_t max_file_bytes = std::size_t{1} << 30; // 1 GiB; sphereflake level 7 is about 0.4 GiB
+    std::size_t max_token_length = 1024;               // characters in one word or number
+    int max_resolution = 16384;                        // per side
+    std::size_t max_pixels = std::size_t{1} << 26;     // width x height: 8192 x 8192
+    std::size_t max_primitives = 10'000'000;           // about 2.6 GB of scene at most
     std::size_t max_polygon_vertices = 10'000;
 };
 
