@@ -5,7 +5,9 @@
 #
 # With --bench it also installs what `make bench` compares against (POV-Ray and
 # Embree 3). Those are optional: when they cannot be installed, it says so and
-# succeeds, and the benchmark skips the comparisons.
+# succeeds, and the benchmark skips the comparisons. With --sandbox it also
+# installs bubblewrap, the grader's optional sandbox; --fuzz, clang for the
+# fuzzing build.
 set -euo pipefail
 
 packages=(g++ make cmake pkg-config libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev)
@@ -13,7 +15,9 @@ optional=()
 case "${1:-}" in
     "") ;;
     --bench) optional=(povray libembree-dev) ;;
-    *) echo "usage: scripts/install-deps.sh [--bench]" >&2; exit 2 ;;
+    --sandbox) optional=(bubblewrap) ;;
+    --fuzz) optional=(clang) ;;
+    *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz]" >&2; exit 2 ;;
 esac
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
@@ -35,7 +39,7 @@ done
 # Only optional packages missing: a failure to install them is a warning.
 optional_only() {
     [ $required_missing -eq 0 ] || exit 1
-    echo "install-deps: make bench will skip the comparisons that need ${missing[*]}; to add them: sudo apt-get install -y ${missing[*]}" >&2
+    echo "install-deps: the optional ${missing[*]} could not be installed (make bench skips the comparisons, the grader the sandbox); to add them: sudo apt-get install -y ${missing[*]}" >&2
     exit 0
 }
 

@@ -15,7 +15,7 @@ class TestRunnerTest : public ::testing::Test {
 protected:
     void SetUp() override {
         folder = std::filesystem::temp_directory_path() / ("test_runner_test_" + std::to_string(getpid()));
-        program = TestProgram{"02_shadows", FAKE_LAB, folder, {}, {{folder.string() + "/", ""}}};
+        program = TestProgram{"02_shadows", FAKE_LAB, folder, {}, {{folder.string() + "/", ""}}, {}};
         program.limits.wall_seconds = 1.0;
     }
     void TearDown() override { std::filesystem::remove_all(folder); }

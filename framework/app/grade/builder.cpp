@@ -13,7 +13,7 @@ BuildStep run_cmake(const BuildFolder& folder, std::vector<std::string> argument
     Limits limits;
     limits.wall_seconds = folder.timeout_seconds;
     limits.output_bytes = 256 * 1024; // the first errors come first
-    const ProcessRun run = run_process({arguments, {}, {{"CLICOLOR_FORCE", "0"}, {"LC_ALL", "C"}}, limits});
+    const ProcessRun run = run_process({arguments, {}, {{"CLICOLOR_FORCE", "0"}, {"LC_ALL", "C"}}, limits, {}});
     BuildStep step;
     step.ok = run.end == ProcessRun::End::exited && run.exit_code == 0;
     step.log = run.output;
@@ -24,7 +24,7 @@ BuildStep run_cmake(const BuildFolder& folder, std::vector<std::string> argument
 bool has_ninja() {
     Limits limits;
     limits.wall_seconds = 10;
-    const ProcessRun run = run_process({{"ninja", "--version"}, {}, {}, limits});
+    const ProcessRun run = run_process({{"ninja", "--version"}, {}, {}, limits, {}});
     return run.end == ProcessRun::End::exited && run.exit_code == 0;
 }
 

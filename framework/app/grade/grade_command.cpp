@@ -35,6 +35,7 @@ struct GradeOptions {
     double timeout = 20.0;
     int memory_mb = 2048;
     long max_processes = 0;
+    std::string sandbox = "auto";
     bool quiet = false;
 };
 
@@ -101,7 +102,12 @@ int run_grade(const GradeOptions& options) {
     setup.test_limits.cpu_seconds = 2 * options.timeout; // the image tests render with two threads
     setup.test_limits.address_space = static_cast<std::size_t>(options.memory_mb) << 20;
     setup.test_limits.file_size = 64 << 20;
-    setup.test_limits.processes = options.max_processes;
+    setup.max_processes = options.max_processes;
+    setup.sandbox = options.sandbox == "bubblewrap" ? SandboxChoice::bubblewrap
+                    : options.sandbox == "none"     ? SandboxChoice::none
+                                                    : SandboxChoice::automatic;
+    // Orphans of a test (a process that left its group) come back to us, to be killed.
+    become_subreaper();
     setup.jobs = options.jobs;
     if (!options.quiet) setup.progress = [](const std::string& line) { std::fprintf(stderr, "grade: %s\n", line.c_str()); };
 
@@ -154,8 +160,12 @@ Command add_grade_command(CLI::App& app) {
         ->check(CLI::Range(0.5, 3600.0));
     command->add_option("--memory", options->memory_mb, "Address space per test in MiB (default 2048)")->check(CLI::Range(64, 1 << 20));
     command->add_option("--max-processes", options->max_processes,
-                        "RLIMIT_NPROC per test: the user's processes and threads in all (default: no limit; root is never limited)")
+                        "RLIMIT_NPROC per test: the processes and threads of the tests' user in all (default: what it runs now "
+                        "plus 256; a grader running as root runs the tests as user nobody)")
         ->check(CLI::Range(0L, 1L << 20));
+    command->add_option("--sandbox", options->sandbox,
+                        "auto: bubblewrap when it works, else resource limits only; bubblewrap: fail without it; none: never")
+        ->check(CLI::IsMember({"auto", "bubblewrap", "none"}));
     command->add_flag("-q,--quiet", options->quiet, "Print only the table");
     return Command{command, [options] {
                        try {

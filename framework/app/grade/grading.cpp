@@ -27,6 +27,16 @@ BuildFolder shared_build_folder(const GradingSetup& setup) {
 
 class LabGrader {
 public:
+    /// The fences of the tests, known once the test programs' folder exists.
+    const Sandbox& fence_tests() {
+        sandbox_ = make_sandbox(setup_.sandbox, {setup_.instructor_tree, setup_.build / "tests", setup_.out / "tests"},
+                                setup_.max_processes);
+        setup_.progress(sandbox_.description);
+        if (!sandbox_.unreachable.empty()) setup_.progress("user nobody cannot reach " + sandbox_.unreachable);
+        if (!sandbox_.bwrap_error.empty()) setup_.progress("bwrap said: " + sandbox_.bwrap_error);
+        return sandbox_;
+    }
+
     LabGrader(const GradingSetup& setup, const std::vector<std::string>& missing)
         : setup_(setup), missing_(missing), folder_(shared_build_folder(setup)),
           paths_(shown_paths(setup)) {}
@@ -118,7 +128,7 @@ private:
     };
 
     TestProgram program(const std::string& lab, const std::string& prefix) const {
-        return {lab, setup_.build / "tests" / (prefix + lab), setup_.out / "tests" / lab, setup_.test_limits, paths_};
+        return {lab, setup_.build / "tests" / (prefix + lab), setup_.out / "tests" / lab, setup_.test_limits, paths_, sandbox_};
     }
 
     // Builds the student's lab file alone first, so that its errors are the ones shown.
@@ -158,6 +168,7 @@ private:
     BuildFolder folder_;
     std::vector<std::pair<std::string, std::string>> paths_;
     RuleFailures finished_;
+    Sandbox sandbox_;
 };
 
 } // namespace
@@ -182,7 +193,9 @@ GradingResult grade_submission(const GradingSetup& setup) {
 
     LabGrader grader(setup, missing);
     grader.build_shared_parts();
+    fs::create_directories(setup.out / "tests");
     GradingResult result;
+    result.isolation = grader.fence_tests().description;
     for (const LabRubric& lab : setup.rubric.labs) {
         result.labs.push_back(grader.grade(lab));
         result.score_cents += result.labs.back().score_cents;

@@ -5,6 +5,7 @@
 
 #include "grade/process_runner.hpp"
 #include "grade/rubric.hpp"
+#include "grade/sandbox.hpp"
 #include "grade/scoring.hpp"
 
 #include <filesystem>
@@ -28,6 +29,8 @@ struct GradingSetup {
     std::filesystem::path prebuilt;        // absolute; the instructor build to import the shared parts from, or empty
     Rubric rubric;
     Limits test_limits;
+    SandboxChoice sandbox = SandboxChoice::automatic;
+    long max_processes = 0; // RLIMIT_NPROC for the tests; 0: chosen by make_sandbox
     int jobs = 2;
     std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
@@ -46,6 +49,7 @@ struct GradingResult {
     std::vector<LabResult> labs;
     long score_cents = 0;
     long max_cents = 0;
+    std::string isolation; // which fences the tests ran behind (Sandbox::description)
 };
 
 /// Grades the submission. Throws GraderFailure when the instructor tree does not configure or build.

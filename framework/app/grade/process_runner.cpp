@@ -5,10 +5,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <sstream>
+#include <dirent.h>
 #include <fcntl.h>
+#include <grp.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -56,6 +62,14 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
     if (l.address_space > 0) set_limit(RLIMIT_AS, l.address_space, l.address_space);
     if (l.file_size > 0) set_limit(RLIMIT_FSIZE, l.file_size, l.file_size);
     if (l.processes > 0) set_limit(RLIMIT_NPROC, l.processes, l.processes);
+    if (spec.identity) {
+        // Groups first: once the user is switched, they can no longer be changed.
+        if (setgroups(0, nullptr) != 0 || setgid(spec.identity->gid) != 0 || setuid(spec.identity->uid) != 0) {
+            const int error = errno;
+            [[maybe_unused]] auto written = write(error_fd, &error, sizeof error);
+            _exit(127);
+        }
+    }
     const int null_fd = open("/dev/null", O_RDONLY);
     if (null_fd >= 0) dup2(null_fd, STDIN_FILENO);
     dup2(output_fd, STDOUT_FILENO);
@@ -165,6 +179,68 @@ ProcessRun run_process(const ProcessSpec& spec) {
     }
     close(start_error[0]);
     return run;
+}
+
+void become_subreaper() { prctl(PR_SET_CHILD_SUBREAPER, 1); }
+
+namespace {
+
+// The pids of this process's children, from /proc/<pid>/stat (field 4 is the parent).
+std::vector<pid_t> children_of(pid_t parent) {
+    std::vector<pid_t> children;
+    DIR* proc = opendir("/proc");
+    if (!proc) return children;
+    while (const dirent* entry = readdir(proc)) {
+        char* end = nullptr;
+        const long pid = std::strtol(entry->d_name, &end, 10);
+        if (*end != '\0' || pid <= 0) continue;
+        std::ifstream stat_file(std::string("/proc/") + entry->d_name + "/stat");
+        std::string stat;
+        std::getline(stat_file, stat);
+        // The command name (field 2) is in parentheses and may hold spaces: read after the last ')'.
+        const std::size_t close = stat.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream rest(stat.substr(close + 1));
+        char state = 0;
+        long ppid = 0;
+        if (rest >> state >> ppid && ppid == parent) children.push_back(static_cast<pid_t>(pid));
+    }
+    closedir(proc);
+    return children;
+}
+
+} // namespace
+
+int kill_leftover_children() {
+    int killed = 0;
+    // Killing a child hands its own children to us: repeat until none is left.
+    for (int round = 0; round < 100; ++round) {
+        const std::vector<pid_t> children = children_of(getpid());
+        if (children.empty()) break;
+        for (const pid_t child : children) {
+            kill(child, SIGKILL);
+            ++killed;
+        }
+        for (const pid_t child : children) waitpid(child, nullptr, 0);
+    }
+    return killed;
+}
+
+long processes_of_user(unsigned uid) {
+    long count = 0;
+    DIR* proc = opendir("/proc");
+    if (!proc) return 0;
+    while (const dirent* entry = readdir(proc)) {
+        if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
+        std::ifstream status(std::string("/proc/") + entry->d_name + "/status");
+        bool ours = false;
+        for (std::string line; std::getline(status, line);) {
+            if (line.rfind("Uid:", 0) == 0) ours = std::strtoul(line.c_str() + 4, nullptr, 10) == uid;
+            if (ours && line.rfind("Threads:", 0) == 0) count += std::strtol(line.c_str() + 8, nullptr, 10);
+        }
+    }
+    closedir(proc);
+    return count;
 }
 
 std::string signal_name(int signal) {

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,12 +25,19 @@ struct Limits {
     std::size_t output_bytes = 8192; // stdout and stderr kept; the rest is read and dropped
 };
 
+/// A user and group to run as (the grader must be root to switch).
+struct Identity {
+    unsigned uid = 65534; // nobody
+    unsigned gid = 65534; // nogroup
+};
+
 /// What to run: argv[0] is looked up in PATH when it has no slash.
 struct ProcessSpec {
     std::vector<std::string> argv;
     std::filesystem::path working_directory; // empty: the grader's
     std::vector<std::pair<std::string, std::string>> environment; // added to (or replacing in) the grader's
     Limits limits;
+    std::optional<Identity> identity; // switch to this user after the limits are set; empty: stay who we are
 };
 
 /// How a run ended. Core dumps are always off (RLIMIT_CORE = 0).
@@ -47,6 +55,17 @@ struct ProcessRun {
 
 /// Runs the program and waits for it and everything it started (the process group).
 ProcessRun run_process(const ProcessSpec& spec);
+
+/// Makes this process the reaper of every orphan among its descendants, so that
+/// a process that left its group (setsid) still ends up as our child.
+void become_subreaper();
+
+/// Kills and reaps every child of this process that is still alive: what a
+/// test left behind outside its process group. Returns how many it killed.
+int kill_leftover_children();
+
+/// The number of processes and threads the user owns now (what RLIMIT_NPROC counts).
+long processes_of_user(unsigned uid);
 
 /// "SIGSEGV" for SIGSEGV, "signal 77" for a number without a name.
 std::string signal_name(int signal);

@@ -11,10 +11,24 @@ std::string folder_name(const std::string& test_name) {
     return name;
 }
 
+namespace {
+
+// Runs the program in the sandbox with `folder` (made anew) as its writable folder and working directory.
+ProcessRun run_fenced(const TestProgram& program, ProcessSpec spec, const std::filesystem::path& folder) {
+    std::filesystem::create_directories(folder);
+    give_folder(program.sandbox, folder);
+    spec.working_directory = folder;
+    const ProcessRun run = program.sandbox.unwrap(run_process(program.sandbox.wrap(std::move(spec), folder)));
+    kill_leftover_children();
+    return run;
+}
+
+} // namespace
+
 std::vector<std::string> list_tests(const TestProgram& program, std::string& problem) {
-    ProcessSpec spec{{program.program.string(), "--gtest_list_tests"}, {}, {}, program.limits};
+    ProcessSpec spec{{program.program.string(), "--gtest_list_tests"}, {}, {}, program.limits, {}};
     spec.limits.output_bytes = 1 << 20;
-    const ProcessRun run = run_process(spec);
+    const ProcessRun run = run_fenced(program, spec, program.output / "listing");
     std::vector<std::string> names;
     if (run.end != ProcessRun::End::exited || run.exit_code != 0) {
         problem = "listing the tests: " + describe(run, spec.limits) + "\n" + trim_text(run.output, 20);
@@ -39,14 +53,14 @@ TestOutcome run_test(const TestProgram& program, const std::string& test_name) {
     outcome.name = test_name;
     const std::filesystem::path folder = program.output / folder_name(test_name);
     std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
     const std::filesystem::path report_file = folder / "gtest.json";
     ProcessSpec spec{{program.program.string(), "--gtest_filter=" + test_name, "--gtest_color=no",
                       "--gtest_output=json:" + report_file.string()},
                      folder,
                      {{"WHITTED_TEST_OUTPUT", folder.string()}, {"GTEST_COLOR", "no"}},
-                     program.limits};
-    const ProcessRun run = run_process(spec);
+                     program.limits,
+                     {}};
+    const ProcessRun run = run_fenced(program, spec, folder);
     classify_run(outcome, run, program.limits, report_file);
     outcome.message = replace_paths(outcome.message, program.path_replacements);
     outcome.output = trim_text(replace_paths(outcome.output, program.path_replacements), 60);
@@ -59,11 +73,13 @@ TestOutcome run_test(const TestProgram& program, const std::string& test_name) {
 std::filesystem::path fetch_reference_picture(const TestProgram& program, const std::string& test_name) {
     const std::filesystem::path folder = program.output / folder_name(test_name);
     std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
-    run_process({{program.program.string(), "--gtest_filter=" + test_name},
-                 folder,
-                 {{"WHITTED_TEST_OUTPUT", folder.string()}, {"WHITTED_REFERENCE_ONLY", "1"}},
-                 program.limits});
+    run_fenced(program,
+               {{program.program.string(), "--gtest_filter=" + test_name},
+                folder,
+                {{"WHITTED_TEST_OUTPUT", folder.string()}, {"WHITTED_REFERENCE_ONLY", "1"}},
+                program.limits,
+                {}},
+               folder);
     return std::filesystem::exists(folder / "reference.png") ? folder : std::filesystem::path();
 }
 

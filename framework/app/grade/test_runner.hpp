@@ -4,6 +4,7 @@
 
 #include "grade/outcome.hpp"
 #include "grade/process_runner.hpp"
+#include "grade/sandbox.hpp"
 
 #include <filesystem>
 #include <string>
@@ -18,13 +19,15 @@ struct TestProgram {
     std::filesystem::path output;   // test folders go in <output>/<test name>/
     Limits limits;
     std::vector<std::pair<std::string, std::string>> path_replacements; // absolute -> shown
+    Sandbox sandbox; // the fences every run of the program goes through
 };
 
 /// The test names ("Suite.Test") the program lists, in its order; empty when
 /// listing failed, with the reason in `problem`.
 std::vector<std::string> list_tests(const TestProgram& program, std::string& problem);
 
-/// Runs one test in its own process group under the program's limits.
+/// Runs one test in its own process group under the program's limits and
+/// sandbox, then kills whatever it left running.
 TestOutcome run_test(const TestProgram& program, const std::string& test_name);
 
 /// Asks an image test for its reference picture only (it does not render);
