@@ -49,16 +49,21 @@ std::pair<int, int> output_size(const Camera& camera, const RenderOptions& optio
 
 // Checks an output path before rendering, so a typo does not cost a whole render.
 std::string check_output_path(const std::string& path) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) return "the image is a folder: " + path;
     std::string extension = std::filesystem::path(path).extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (extension != ".png" && extension != ".ppm" && extension != ".pfm")
         return "the image must end in .png, .ppm or .pfm: " + path;
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder)) return "no such folder for the image: " + folder.string();
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) return "the image is a folder: " + path;
+    if (!folder.empty() && std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error))
+        return "not a folder, so the image cannot go in it: " + folder.string();
+    if (!folder.empty() && !std::filesystem::is_directory(folder, error))
+        return "no such folder for the image: " + folder.string();
     // Found now rather than after the whole render.
     const bool exists = std::filesystem::exists(path, error);
+    if (exists && !std::filesystem::is_regular_file(path, error))
+        return "not a regular file (a device or pipe cannot hold the image): " + path;
     if (access(exists ? path.c_str() : (folder.empty() ? "." : folder.c_str()), W_OK) != 0)
         return "cannot write the image (no permission): " + path;
     return {};
@@ -222,13 +227,15 @@ Command add_render_command(CLI::App& app) {
                                "depth control; 0 = trace every ray down to the maximum depth; default 1/1024)")
         ->check(CLI::Validator(
             [](std::string& text) -> std::string {
-                double value = 0.0;
+                double value = -1.0;
+                std::size_t used = 0;
                 try {
-                    value = std::stod(text);
+                    value = std::stod(text, &used);
                 } catch (...) {
-                    return "expected a number from 0 to 1, found " + text;
                 }
-                return value >= 0.0 && value <= 1.0 ? "" : "expected a number from 0 to 1, found " + text;
+                // The whole text must be the number: 0.5abc is not 0.5.
+                const bool ok = used == text.size() && value >= 0.0 && value <= 1.0;
+                return ok ? "" : "expected a number from 0 to 1, found " + text;
             },
             "0..1"));
     render_command->add_option("--threads", options->threads, "Rendering threads; 0 = one per core (default 0)")

@@ -28,6 +28,7 @@ ImageFormat image_format(const std::filesystem::path& path) {
     if (extension == ".png") return ImageFormat::png;
     if (extension == ".ppm") return ImageFormat::ppm;
     if (extension == ".pfm") return ImageFormat::pfm;
+    if (extension.empty()) throw image_error(path, "the file name has no extension (accepted: .png, .ppm, .pfm)");
     throw image_error(path, "unknown image extension '" + path.extension().string() +
                                 "' (accepted: .png, .ppm, .pfm)");
 }

@@ -29,6 +29,7 @@ constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{2} << 30;
 /// The whole file as bytes.
 std::string read_file(const std::filesystem::path& path) {
     std::error_code error;
+    if (!std::filesystem::exists(path, error) && !error) throw image_error(path, "no such file");
     if (std::filesystem::is_directory(path, error)) throw image_error(path, "is a directory, not an image file");
     if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
         throw image_error(path, "is not a regular file");
@@ -252,8 +253,8 @@ Image detail::decode_image(std::string_view bytes, ImageFormat format, const std
 }
 
 Image read_image(const std::filesystem::path& path) {
-    const detail::ImageFormat format = detail::image_format(path);
-    return detail::decode_image(read_file(path), format, path);
+    const std::string bytes = read_file(path); // first, so that a missing file or a folder is named as such
+    return detail::decode_image(bytes, detail::image_format(path), path);
 }
 
 } // namespace whitted

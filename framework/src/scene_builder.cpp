@@ -19,6 +19,18 @@ Token expect_word(TokenStream& tokens, std::string_view word, std::string_view c
     return token;
 }
 
+/// True when the word holds no control bytes and is well-formed UTF-8 (plain ASCII is).
+bool is_text(std::string_view word) {
+    for (std::size_t i = 0; i < word.size(); ++i) {
+        const auto byte = static_cast<unsigned char>(word[i]);
+        const int more = byte < 0x80 ? 0 : byte < 0xc2 ? -1 : byte < 0xe0 ? 1 : byte < 0xf0 ? 2 : byte < 0xf5 ? 3 : -1;
+        if (byte < 0x20 || byte == 0x7f || more < 0 || word.size() - i <= static_cast<std::size_t>(more)) return false;
+        for (int k = 0; k < more; ++k)
+            if ((static_cast<unsigned char>(word[++i]) & 0xc0) != 0x80) return false;
+    }
+    return true;
+}
+
 } // namespace
 
 SceneBuilder::SceneBuilder(TokenStream& tokens, const SceneLimits& limits) : tokens_(tokens), limits_(limits) {}
@@ -171,9 +183,10 @@ void SceneBuilder::read_polygon(const Token& keyword, bool with_normals) {
     for (std::size_t i = 0; i < count; ++i) {
         vertices.push_back(numbers.vec3("a polygon vertex"));
         if (!with_normals) continue;
+        const Token normal_start = tokens_.peek();
         const Vec3 normal = numbers.vec3("a vertex normal");
         const double largest = max_abs_component(normal);
-        if (largest == 0.0) tokens_.fail(numbers.last(), "expected a non-zero vertex normal, found 0 0 0");
+        if (largest == 0.0) tokens_.fail(normal_start, "expected a non-zero vertex normal, found 0 0 0");
         normals.push_back(glm::normalize(normal / largest)); // scaled first: no overflow for 1e300, no underflow for 1e-300
     }
     // Tessellators write zero-area `pp` triangles (the SPD teapot does): those are skipped.
@@ -207,7 +220,11 @@ void read_shine_and_transmission(NumberReader& numbers, TokenStream& tokens, Mat
 void fail_unknown_keyword(TokenStream& tokens, const Token& token, Dialect dialect) {
     if (looks_like_number(token.text))
         tokens.fail(token, "expected a keyword, found the number " + describe(token) +
-                               " (the entity before it has too many numbers)");
+                               (tokens.taken() == 1 ? " (every entity starts with a keyword such as 'v' or 's')"
+                                                    : " (the entity before it has too many numbers)"));
+    if (!is_text(token.text))
+        tokens.fail(token, "unknown keyword " + describe(token) +
+                               " (the file is not plain text: is it really a scene file?)");
     static constexpr std::string_view nff_only[] = {"b", "c", "pp"};
     static constexpr std::string_view p3f_only[] = {"accel", "spp", "bclr", "env", "pl", "box", "mesh"};
     const bool is_nff = dialect == Dialect::nff;
@@ -216,7 +233,7 @@ void fail_unknown_keyword(TokenStream& tokens, const Token& token, Dialect diale
                                                              : std::span<const std::string_view>(nff_only);
     for (const std::string_view word : other)
         if (token.text == word)
-            hint = std::string(" (it is a ") + (is_nff ? "P3F" : "NFF") +
+            hint = std::string(" (it is ") + (is_nff ? "a P3F" : "an NFF") +
                    " keyword; the dialect comes from the file extension)";
     tokens.fail(token, "unknown keyword " + describe(token) + hint);
 }

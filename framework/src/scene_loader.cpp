@@ -25,15 +25,17 @@ LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& lim
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
         throw SceneError(name + ": cannot open a directory as a scene file");
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+        throw SceneError(name + ": not a regular file (a device, pipe or socket cannot be a scene file)");
     const std::string extension = lower_case(path.extension().string());
     Dialect dialect = Dialect::nff;
     if (extension == ".p3f") {
         dialect = Dialect::p3f;
+    } else if (extension.empty()) {
+        throw SceneError(name + ": the file name has no extension (expected .nff or .p3f, which tells the format)");
     } else if (extension != ".nff") {
         throw SceneError(name + ": unknown scene format '" + path.extension().string() + "' (expected .nff or .p3f)");
     }
-    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
-        throw SceneError(name + ": not a regular file (a device, pipe or socket cannot be a scene file)");
     if (const std::uintmax_t size = std::filesystem::file_size(path, error); !error && size > limits.max_file_bytes)
         throw SceneError(name + ": the file has " + std::to_string(size) + " bytes, more than the " +
                          std::to_string(limits.max_file_bytes) + " a scene file may have");

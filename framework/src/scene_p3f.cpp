@@ -85,12 +85,12 @@ void read_mesh(SceneBuilder& scene, const SceneLimits& limits) {
     std::vector<Point3> vertices;
     vertices.reserve(static_cast<std::size_t>(std::min(vertex_count, 1ll << 20)));
     for (long long i = 0; i < vertex_count; ++i) vertices.push_back(numbers.vec3("a mesh vertex"));
-    const long long widest = std::numeric_limits<long long>::max();
     for (long long face = 0; face < face_count; ++face) {
         std::array<Point3, 3> corners;
         const Token face_start = tokens.peek();
         for (Point3& corner : corners) {
-            long long index = numbers.integer("a mesh vertex index", -widest, widest);
+            long long index = numbers.integer("a mesh vertex index", std::numeric_limits<long long>::min(),
+                                               std::numeric_limits<long long>::max());
             if (index < 0) index += vertex_count + 1; // -1 is the last vertex
             if (index < 1 || index > vertex_count)
                 tokens.fail(numbers.last(), "expected a vertex index from 1 to " + std::to_string(vertex_count) +

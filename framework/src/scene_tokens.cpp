@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace whitted::detail {
 
@@ -97,6 +98,9 @@ TokenStream::TokenStream(std::string_view text, std::string_view file_name, std:
     : text_(text), file_name_(file_name), max_token_length_(max_token_length) {
     // Editors on some systems start UTF-8 files with a byte-order mark: skip it.
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
+    // Others save "Unicode" text as UTF-16, which has a NUL byte beside every letter.
+    if (text_.starts_with("\xFF\xFE") || text_.starts_with("\xFE\xFF"))
+        fail(Token{}, "expected a text file in ASCII or UTF-8, found UTF-16 (save the file as UTF-8)");
 }
 
 const Token& TokenStream::peek() {
@@ -107,6 +111,7 @@ const Token& TokenStream::peek() {
 Token TokenStream::next() {
     const Token token = peek();
     peeked_.reset();
+    ++taken_;
     return token;
 }
 
@@ -207,7 +212,10 @@ long long NumberReader::integer(std::string_view what, long long min, long long 
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (end != text.data() + text.size() || error == std::errc::invalid_argument)
         tokens_.fail(token, "expected a whole number for " + std::string(what) + ", found " + describe(token));
-    if (error == std::errc::result_out_of_range || value < min || value > max)
+    // Too long for any integer: out of range, like a huge value that fits.
+    if (error == std::errc::result_out_of_range)
+        value = text.starts_with('-') ? std::numeric_limits<long long>::min() : std::numeric_limits<long long>::max();
+    if (value < min || value > max)
         tokens_.fail(token, "expected a whole number from " + std::to_string(min) + " to " + std::to_string(max) +
                                 " for " + std::string(what) + ", found " + describe(token));
     return value;

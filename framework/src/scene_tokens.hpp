@@ -50,6 +50,9 @@ class TokenStream {
     /// True when the next token is written like a number.
     bool next_is_number() { return looks_like_number(peek().text); }
 
+    /// How many tokens next() has taken so far.
+    std::size_t taken() const { return taken_; }
+
     /// "file:line:col" of the token.
     std::string where(const Token& token) const;
 
@@ -65,6 +68,7 @@ class TokenStream {
     std::size_t pos_ = 0;
     int line_ = 1;
     int column_ = 1;
+    std::size_t taken_ = 0;
     Token last_end_;              // where the end of the file is reported: just after the last token
     std::optional<Token> peeked_;
 };

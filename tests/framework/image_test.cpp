@@ -182,7 +182,7 @@ TEST_F(ImageFiles, WritingIntoAMissingDirectoryFails) {
     EXPECT_THROW(write_image(test_image(), file("missing/a.ppm")), ImageError);
     EXPECT_THROW(write_image(test_image(), file("missing/a.png")), ImageError);
     EXPECT_THROW(write_image(test_image(), file("missing/a.pfm")), ImageError);
-    expect_error(file("missing/a.ppm"), "cannot open");
+    expect_error(file("missing/a.ppm"), "no such file");
 }
 
 TEST_F(ImageFiles, AsciiPpmWithCommentsAndSmallMaxvalReadsAsFractions) {
@@ -214,7 +214,7 @@ TEST_F(ImageFiles, BigEndianGreyscalePfmFillsAllChannels) {
 }
 
 TEST_F(ImageFiles, MalformedFilesGiveImageErrorsThatSayWhy) {
-    expect_error(file("absent.ppm"), "cannot open");
+    expect_error(file("absent.ppm"), "absent.ppm: no such file");
     expect_error(raw("empty.ppm", ""), "empty");
     expect_error(raw("magic.ppm", "P5\n1 1\n255\nabc"), "magic");
     expect_error(raw("magic.pfm", "PX\n1 1\n-1.0\n" + std::string(12, '\0')), "magic");
@@ -236,7 +236,7 @@ TEST_F(ImageFiles, MalformedFilesGiveImageErrorsThatSayWhy) {
     expect_error(raw("text.ppm", "P3\n1 1\n255\n1 two 3\n"), "sample");
     expect_error(raw("bad.png", "not a png at all"), "PNG");
     expect_error(raw("cut.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16)), "PNG");
-    expect_error(dir_, "unknown image extension");
+    expect_error(dir_, "is a directory");
     fs::create_directory(file("folder.ppm"));
     expect_error(file("folder.ppm"), "directory");
 }

@@ -47,6 +47,21 @@ TEST(SceneErrors, ExtraNumberWhereAKeywordBelongsIsAnError) {
     expect_error(nff_error("s 0 0 0 1 2"), "scene.nff:2:11: expected a keyword, found the number '2'", "too many");
 }
 
+TEST(SceneErrors, NumberAtTheStartOfTheFileAsksForAKeyword) {
+    EXPECT_EQ(error_of("  0 0 5", Dialect::p3f),
+              "scene.p3f:1:3: expected a keyword, found the number '0' (every entity starts with a keyword such as "
+              "'v' or 's')");
+}
+
+TEST(SceneErrors, BinaryAndUtf16FilesAreNamedAsNotText) {
+    expect_error(error_of("\x89PNG\r\n", Dialect::nff), "scene.nff:1:1: unknown keyword '\\x89PNG'",
+                 "not plain text");
+    EXPECT_EQ(error_of("\xFF\xFEv\0", Dialect::nff),
+              "scene.nff:1:1: expected a text file in ASCII or UTF-8, found UTF-16 (save the file as UTF-8)");
+    // A UTF-8 word is text, so it gets no such hint.
+    EXPECT_EQ(nff_error("k\xC3\xBCgel 1"), "scene.nff:2:1: unknown keyword 'k\\xc3\\xbcgel'");
+}
+
 TEST(SceneErrors, NanInfinityAndOverflowAreNotFiniteNumbers) {
     EXPECT_EQ(nff_error("s 0 0 0 nan"), "scene.nff:2:9: expected a finite number for the sphere radius, found 'nan'");
     expect_error(nff_error("s 0 0 -inf 1"), "scene.nff:2:7: expected a finite number", "'-inf'");
@@ -177,7 +192,7 @@ TEST(SceneErrors, MorePrimitivesThanTheLimitIsAnError) {
 
 TEST(SceneErrors, ZeroLengthVertexNormalIsAnError) {
     expect_error(nff_error("pp 3\n0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1"),
-                 "scene.nff:4:11: expected a non-zero vertex normal", "0 0 0");
+                 "scene.nff:4:7: expected a non-zero vertex normal", "0 0 0");
 }
 
 TEST(SceneErrors, BoxWithMinNotBelowMaxIsAnError) {
@@ -196,6 +211,8 @@ TEST(SceneErrors, MeshIndexZeroOrOutOfRangeIsAnErrorAtTheIndex) {
     expect_error(p3f_error(vertices + "1 2 4"), "scene.p3f:6:5: expected a vertex index from 1 to 3", "'4'");
     expect_error(p3f_error(vertices + "-4 1 2"), "scene.p3f:6:1: expected a vertex index from 1 to 3", "'-4'");
     expect_error(p3f_error(vertices + "1 2.5 3"), "scene.p3f:6:3: expected a whole number", "'2.5'");
+    expect_error(p3f_error(vertices + "1 2 -99999999999999999999"), "scene.p3f:6:5: expected a vertex index from 1 to 3",
+                 "'-99999999999999999999'");
     EXPECT_EQ(p3f_error(vertices + "1 2"), "scene.p3f:6:4: expected 1 more number for 'mesh', found end of file");
 }
 
