@@ -4,6 +4,9 @@
 #   make handout OUT=dir, make proofs, make references: for instructors
 #   make test-grader  end-to-end check of `whitted grade` (CI, after make test)
 #   make bench    time whitted against POV-Ray and Embree (docs/instructors.md, "Benchmark")
+#   make sanitize every test built with AddressSanitizer + UBSan (docs/robustness.md)
+#   make fuzz     fuzz the loaders and the image reader, MINUTES each (docs/robustness.md)
+#   make test-hostile  the grader against hostile submissions (CI)
 MAKEFLAGS += --no-print-directory
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
@@ -16,7 +19,9 @@ BENCH_FLAKES ?= 4,5,6
 BENCH_SCENES ?= $(wildcard $(SPD_DIR)/teapot6.nff $(SPD_DIR)/mount6.nff $(SPD_DIR)/tetra6.nff)
 BENCH_ARGS ?=
 
-.PHONY: all deps configure build render test bench test-grader references handout proofs clean
+MINUTES ?= 10
+
+.PHONY: all deps configure build render test bench sanitize fuzz test-grader test-hostile references handout proofs clean
 
 all: build
 
@@ -52,9 +57,21 @@ else
 	@bash scripts/lab-progress.sh $(BUILD_DIR)
 endif
 
+# Every test again, built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/).
+sanitize: deps
+	@bash scripts/test-sanitizers.sh
+
 ifneq ($(wildcard solution/01_ray_casting.cpp),)
 test-grader: build
 	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-grader.sh
+
+test-hostile: build
+	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-hostile.sh
+
+# libFuzzer on the NFF and P3F loaders and the image reader, MINUTES each (build-fuzz/).
+fuzz: DEPS_ARGS = --fuzz
+fuzz: deps
+	@bash scripts/fuzz.sh --minutes $(MINUTES)
 
 # Instructors: rewrite every reference picture from the reference solution.
 references: build
@@ -71,7 +88,7 @@ proofs:
 	@bash scripts/prove-tests.sh
 else
 # The student handout has no reference solution: these are the instructor's.
-test-grader references handout proofs:
+test-grader test-hostile fuzz references handout proofs:
 	@echo "make $@ is for instructors: it needs the instructor's tree (solution/, tests/hidden/)"; exit 2
 endif
 
