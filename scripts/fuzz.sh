@@ -48,7 +48,7 @@ for target in "${targets[@]}"; do
     # With -jobs, each job writes fuzz-N.log in the working folder.
     for job_log in fuzz-*.log; do [ -f "$job_log" ] && { cat "$job_log" >> "$log"; rm "$job_log"; }; done
     execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{s += $2} END {print s + 0}')
-    seconds=$(grep -o 'stat::average_exec_per_sec: [0-9]*' "$log" | head -1 | awk '{print $2}')
+    seconds=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$log" | head -1 | awk '{print $2}')
     found=$(($(find "$findings" -type f | wc -l) - before))
     size=$(find "$corpus" -type f | wc -l)
     printf '%s\t%s\t%d\t%d\t%d\t%d\n' "$(date -u +%Y-%m-%dT%H:%M:%SZ)" "$target" $((minutes * 60)) "$execs" "$size" "$found" \

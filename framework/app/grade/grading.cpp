@@ -2,6 +2,7 @@
 #include "grade/builder.hpp"
 #include "grade/prebuilt.hpp"
 #include "grade/submission.hpp"
+#include "grade/tamper_check.hpp"
 #include "grade/test_runner.hpp"
 #include "grade/text.hpp"
 
@@ -14,6 +15,14 @@ namespace {
 namespace fs = std::filesystem;
 
 bool is_lab(const std::string& name) { return name != "integration"; }
+
+// What a test must not change: the instructor tree's sources and data, and the imported libraries.
+FileRecord relied_on_files(const GradingSetup& setup) {
+    const fs::path& tree = setup.instructor_tree;
+    FileRecord record = FileRecord::of({tree / "tests", tree / "solution", tree / "scenes", tree / "labs", tree / "framework", tree / "cmake"});
+    if (!setup.prebuilt.empty()) record.add(FileRecord::of({setup.prebuilt}, {".a", ".o", ".cmake"}));
+    return record;
+}
 
 // The grading build folder; the prebuilt parts are added once they are known to be usable.
 BuildFolder shared_build_folder(const GradingSetup& setup) {
@@ -196,8 +205,12 @@ GradingResult grade_submission(const GradingSetup& setup) {
     fs::create_directories(setup.out / "tests");
     GradingResult result;
     result.isolation = grader.fence_tests().description;
+    const FileRecord relied_on = relied_on_files(setup);
     for (const LabRubric& lab : setup.rubric.labs) {
         result.labs.push_back(grader.grade(lab));
+        if (const std::optional<std::string> change = relied_on.first_change(relied_on_files(setup)))
+            throw GraderFailure("while " + lab.lab + " was tested, a file the grader relies on changed: " + *change +
+                                ". Grading stopped so that no grade depends on it; restore the file (git checkout, make build) and grade again.");
         result.score_cents += result.labs.back().score_cents;
         result.max_cents += result.labs.back().max_cents;
     }
