@@ -41,6 +41,7 @@ for target in "${targets[@]}"; do
     cp -n tests/fuzz/corpus/"$target"/* "$corpus"/ 2> /dev/null || true
     before=$(find "$findings" -type f | wc -l)
     echo "fuzzing $target for $minutes min with $jobs job(s); log: $log"
+    started=$SECONDS
     # Exit codes of libFuzzer are findings; they are counted below.
     "$build/tests/fuzz/fuzz_$target" "$corpus" -dict="tests/fuzz/$target.dict" -max_total_time=$((minutes * 60)) \
         -timeout=10 -rss_limit_mb=3072 -malloc_limit_mb=2048 -print_final_stats=1 \
@@ -51,7 +52,8 @@ for target in "${targets[@]}"; do
     seconds=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$log" | head -1 | awk '{print $2}')
     found=$(($(find "$findings" -type f | wc -l) - before))
     size=$(find "$corpus" -type f | wc -l)
-    printf '%s\t%s\t%d\t%d\t%d\t%d\n' "$(date -u +%Y-%m-%dT%H:%M:%SZ)" "$target" $((minutes * 60)) "$execs" "$size" "$found" \
+    # The time it really ran: a finding stops libFuzzer early.
+    printf '%s\t%s\t%d\t%d\t%d\t%d\n' "$(date -u +%Y-%m-%dT%H:%M:%SZ)" "$target" $((SECONDS - started)) "$execs" "$size" "$found" \
         >> "$build/fuzz-runs.tsv"
     echo "  $execs executions (${seconds:-?}/s per job), corpus $size inputs, $found new finding(s)"
     if [ "$found" -gt 0 ]; then

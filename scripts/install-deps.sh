@@ -16,7 +16,7 @@ case "${1:-}" in
     "") ;;
     --bench) optional=(povray libembree-dev) ;;
     --sandbox) optional=(bubblewrap) ;;
-    --fuzz) optional=(clang) ;;
+    --fuzz) optional=(clang libclang-rt-14-dev) ;;
     *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz]" >&2; exit 2 ;;
 esac
 

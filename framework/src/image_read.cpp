@@ -1,14 +1,17 @@
 // Reading PNG, PPM (P6 and P3) and PFM (PF and Pf) files into linear images.
 // Every malformed file becomes an ImageError "path: what is wrong".
 #include "image_format.hpp"
+#include "printable.hpp"
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <climits>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -70,7 +73,7 @@ class HeaderReader {
         long value = 0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
         if (error != std::errc() || end != text.data() + text.size() || value < low || value > high) {
-            throw image_error(path_, std::string("bad ") + what + " '" + std::string(text) + "' (expected " +
+            throw image_error(path_, std::string("bad ") + what + " " + detail::quoted_printable(text) + " (expected " +
                                          std::to_string(low) + ".." + std::to_string(high) + ")");
         }
         return value;
@@ -82,7 +85,7 @@ class HeaderReader {
         double value = 0.0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
         if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) || value == 0.0) {
-            throw image_error(path_, std::string("bad ") + what + " '" + std::string(text) + "'");
+            throw image_error(path_, std::string("bad ") + what + " " + detail::quoted_printable(text));
         }
         return value;
     }
@@ -206,10 +209,16 @@ Image read_pfm(std::string_view bytes, const std::filesystem::path& path, std::s
     return image;
 }
 
-/// stb_image's reason for the last failure, never null.
+/// stb_image's reason for the last failure, when it is a short readable text.
+/// (Found by fuzzing: for some corrupt files the system's stb reports bytes
+/// that are not text.)
 std::string stb_reason() {
     const char* reason = stbi_failure_reason();
-    return reason ? reason : "unknown reason";
+    const std::string_view text = reason ? std::string_view(reason, strnlen(reason, 81)) : std::string_view();
+    const bool readable = !text.empty() && text.size() <= 80 && std::all_of(text.begin(), text.end(), [](char c) {
+        return static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f;
+    });
+    return readable ? std::string(text) : "corrupt data";
 }
 
 /// Reads a PNG of any bit depth and channel count as 8-bit RGB, v / 255.

@@ -1,4 +1,5 @@
 #include "scene_tokens.hpp"
+#include "printable.hpp"
 
 #include "whitted/scene_loader.hpp"
 
@@ -76,22 +77,7 @@ std::string quoted(std::string_view word) {
 }
 
 std::string describe(const Token& token) {
-    if (token.is_end()) return "end of file";
-    // Control and non-ASCII bytes are shown as \xNN so that the message stays one readable line.
-    std::string shown;
-    for (const char c : token.text.substr(0, 60)) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte < 0x7f) {
-            shown += c;
-        } else {
-            static const char digits[] = "0123456789abcdef";
-            shown += "\\x";
-            shown += digits[byte >> 4];
-            shown += digits[byte & 15];
-        }
-    }
-    if (token.text.size() > 60) shown += "...";
-    return quoted(std::string_view(shown));
+    return token.is_end() ? "end of file" : quoted_printable(token.text);
 }
 
 TokenStream::TokenStream(std::string_view text, std::string_view file_name, std::size_t max_token_length)

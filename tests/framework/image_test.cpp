@@ -234,6 +234,9 @@ TEST_F(ImageFiles, MalformedFilesGiveImageErrorsThatSayWhy) {
     expect_error(raw("sample.ppm", "P3\n1 1\n4\n1 2 5\n"), "exceeds maxval");
     expect_error(raw("scale.pfm", "PF\n1 1\n0.0\n" + std::string(12, '\0')), "scale");
     expect_error(raw("text.ppm", "P3\n1 1\n255\n1 two 3\n"), "sample");
+    // Found by fuzzing: bytes that are not printable ASCII are shown as \xNN, and a long word is cut.
+    expect_error(raw("bytes.ppm", "P3\n1 1\n255\n2\xff\x01" + std::string(100, '5') + " 0 0\n"),
+                 "bad sample '2\\xff\\x01" + std::string(57, '5') + "...' (expected 0..65535)");
     expect_error(raw("bad.png", "not a png at all"), "PNG");
     expect_error(raw("cut.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16)), "PNG");
     expect_error(dir_, "is a directory");
