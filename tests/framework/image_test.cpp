@@ -239,6 +239,9 @@ TEST_F(ImageFiles, MalformedFilesGiveImageErrorsThatSayWhy) {
                  "bad sample '2\\xff\\x01" + std::string(57, '5') + "...' (expected 0..65535)");
     expect_error(raw("bad.png", "not a png at all"), "PNG");
     expect_error(raw("cut.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16)), "PNG");
+    // Found by fuzzing: a chunk that claims more bytes than the file holds is refused before stb allocates them.
+    expect_error(raw("claims.png", std::string("\x89PNG\r\n\x1a\n\x7f\xff\xff\xffIDAT", 16) + std::string(20, 'x')),
+                 "corrupt PNG: chunk 'IDAT' claims 2147483647 bytes, the file has 20 left");
     expect_error(dir_, "is a directory");
     fs::create_directory(file("folder.ppm"));
     expect_error(file("folder.ppm"), "directory");
