@@ -36,6 +36,10 @@ BuildFolder shared_build_folder(const GradingSetup& setup) {
 
 class LabGrader {
 public:
+    LabGrader(const GradingSetup& setup, const std::vector<std::string>& missing)
+        : setup_(setup), missing_(missing), folder_(shared_build_folder(setup)),
+          paths_(shown_paths(setup)) {}
+
     /// The fences of the tests, known once the test programs' folder exists.
     const Sandbox& fence_tests() {
         sandbox_ = make_sandbox(setup_.sandbox, {setup_.instructor_tree, setup_.build / "tests", setup_.out / "tests"},
@@ -45,10 +49,6 @@ public:
         if (!sandbox_.bwrap_error.empty()) setup_.progress("bwrap said: " + sandbox_.bwrap_error);
         return sandbox_;
     }
-
-    LabGrader(const GradingSetup& setup, const std::vector<std::string>& missing)
-        : setup_(setup), missing_(missing), folder_(shared_build_folder(setup)),
-          paths_(shown_paths(setup)) {}
 
     // The framework, the reference labs and the lab tests: imported from the instructor build when it can be, else compiled here.
     void build_shared_parts() {

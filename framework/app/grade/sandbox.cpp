@@ -43,19 +43,6 @@ void show_data(const fs::path& folder, std::vector<std::string>& options) {
     }
 }
 
-std::string find_program(const std::string& name) {
-    const char* path = std::getenv("PATH");
-    std::string folders = path ? path : "/usr/bin:/bin";
-    std::size_t start = 0;
-    while (start <= folders.size()) {
-        const std::size_t end = std::min(folders.find(':', start), folders.size());
-        const fs::path candidate = fs::path(folders.substr(start, end - start)) / name;
-        if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
-        start = end + 1;
-    }
-    return {};
-}
-
 // The first of the paths user nobody cannot read and enter, or empty when it reaches all of them.
 std::string unreachable_for_nobody(const std::vector<fs::path>& paths) {
     ProcessSpec probe{{"/bin/sh", "-c", "for p; do test -r \"$p\" && test -x \"$p\" || { printf %s \"$p\"; exit 1; }; done", "sh"},
@@ -137,20 +124,22 @@ Sandbox make_sandbox(SandboxChoice choice, const SandboxPaths& paths, long max_p
     else missing.push_back("no process limit (it does not bind root)");
 
     if (choice != SandboxChoice::none) {
-        const std::string bwrap = find_program("bwrap");
-        std::string problem = bwrap.empty() ? "bwrap is not installed (apt-get install bubblewrap)" : "";
-        if (problem.empty()) {
-            sandbox.bubblewrap = true;
-            sandbox.bwrap_prefix = bwrap_options(bwrap, paths);
-            ProcessSpec probe = sandbox.wrap({{"/bin/true"}, {}, {}, {}, {}}, paths.out);
-            probe.limits.wall_seconds = 10;
-            const ProcessRun run = run_process(probe);
-            if (run.end != ProcessRun::End::exited || run.exit_code != 0) {
-                problem = "bwrap does not work here (" + describe(run, probe.limits) + ")";
-                sandbox.bwrap_error = run.output.substr(0, 300);
-                sandbox.bubblewrap = false;
-                sandbox.bwrap_prefix.clear();
-            }
+        // One run of `true` inside tells whether bwrap is installed (the runner looks it up in PATH) and works here.
+        std::string problem;
+        sandbox.bubblewrap = true;
+        sandbox.bwrap_prefix = bwrap_options("bwrap", paths);
+        ProcessSpec probe = sandbox.wrap({{"/bin/true"}, {}, {}, {}, {}}, paths.out);
+        probe.limits.wall_seconds = 10;
+        const ProcessRun run = run_process(probe);
+        if (run.end == ProcessRun::End::failed_to_start) {
+            problem = "bwrap is not installed (apt-get install bubblewrap)";
+        } else if (run.end != ProcessRun::End::exited || run.exit_code != 0) {
+            problem = "bwrap does not work here (" + describe(run, probe.limits) + ")";
+            sandbox.bwrap_error = run.output.substr(0, 300);
+        }
+        if (!problem.empty()) {
+            sandbox.bubblewrap = false;
+            sandbox.bwrap_prefix.clear();
         }
         if (!problem.empty() && choice == SandboxChoice::bubblewrap) throw std::runtime_error("--sandbox bubblewrap: " + problem);
         if (sandbox.bubblewrap) fences.push_back("bubblewrap (no network; only the tests' scenes and images visible, read-only)");
