@@ -85,8 +85,15 @@ hostile hostile-b \
     04_reflection reflection '#include <fstream> #include <string> static const bool tried = [] { for (const char* path : {"'"$solution_dir"'/04_reflection.cpp", "'"$tests_dir"'/hidden/04_reflection/hidden_reflection_test.cpp"}) { std::ifstream file(path); std::string line; std::ofstream probe("hostile-probe.txt", std::ios::app); if (std::getline(file, line)) probe << "LEAKED " << path << ": " << line << "\n"; else probe << "could not read " << path << "\n"; } return true; }(); (void)tried;' \
     05_refraction refraction '#include <cstdio> #include <fstream> static const bool tried = [] { for (const char* path : {"'"$tests_dir"'/images/whitted_1980.png", "'"$tests_dir"'/rubric.json", "'"$out_b"'/results.json"}) { std::FILE* file = std::fopen(path, "wb"); std::ofstream("hostile-probe.txt", std::ios::app) << (file ? "OVERWROTE " : "could not overwrite ") << path << "\n"; if (file) { std::fputs("hostile", file); std::fclose(file); } } return true; }(); (void)tried;' \
     06_fresnel fresnel_blend '#include <sys/prctl.h> #include <unistd.h> static const bool left = [] { if (fork() == 0) { setsid(); prctl(PR_SET_NAME, "hostile-orphan"); sleep(3600); _exit(0); } return true; }(); (void)left;'
+# The sandbox where bwrap works here (not, for instance, inside a chroot, where it cannot pivot_root).
 sandbox=bubblewrap
-command -v bwrap > /dev/null || { sandbox=none; echo "note: bubblewrap is not installed: hostile-b runs without the sandbox"; }
+if ! command -v bwrap > /dev/null; then
+    sandbox=none
+    echo "note: bubblewrap is not installed: hostile-b runs without the sandbox"
+elif ! bwrap --dev-bind / / true 2> /dev/null; then
+    sandbox=none
+    echo "note: bubblewrap does not work on this machine: hostile-b runs without the sandbox"
+fi
 grade hostile-b "$work/hostile-b-labs" 1 --build-cache "$work/cache" --timeout 1 --sandbox "$sandbox"
 check hostile-b "$common"'
 for lab in ("01_ray_casting", "02_shadows", "03_blinn_phong"): lost(lab)
