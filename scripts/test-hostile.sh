@@ -72,19 +72,14 @@ ok("rlimits mode" in results["output"], "the mode is not reported: " + results["
 
 tests_dir="$tree/tests" solution_dir="$tree/solution" out_b="$work/hostile-b"
 # A fork bomb only where the grader can bound it: not root, or root with tests run as nobody.
+exposed=0
 bomb='#include <sys/prctl.h> #include <unistd.h> if (fork() == 0) { setsid(); prctl(PR_SET_NAME, "hostile-bomb"); for (;;) fork(); } for (;;) fork();'
 if [ "$(id -u)" -eq 0 ] && ! python3 -c 'import os, sys; os.setgid(65534); os.setuid(65534); sys.exit(0 if all(os.access(p, os.R_OK | os.X_OK) for p in sys.argv[1:]) else 1)' \
         "$tree/tests" "$tree/$build/tests" "$work"; then
     echo "note: user nobody cannot reach this tree, so tests would run as root without a process limit: no fork bomb"
     bomb='for (;;) {}'
+    exposed=1
 fi
-hostile hostile-b \
-    01_ray_casting primary_ray '#include <cstdlib> std::exit(0);' \
-    02_shadows lambert '#include <cmath> return Color(std::nan(""));' \
-    03_blinn_phong blinn_phong "$bomb" \
-    04_reflection reflection '#include <fstream> #include <string> static const bool tried = [] { for (const char* path : {"'"$solution_dir"'/04_reflection.cpp", "'"$tests_dir"'/hidden/04_reflection/hidden_reflection_test.cpp"}) { std::ifstream file(path); std::string line; std::ofstream probe("hostile-probe.txt", std::ios::app); if (std::getline(file, line)) probe << "LEAKED " << path << ": " << line << "\n"; else probe << "could not read " << path << "\n"; } return true; }(); (void)tried;' \
-    05_refraction refraction '#include <cstdio> #include <fstream> static const bool tried = [] { for (const char* path : {"'"$tests_dir"'/images/whitted_1980.png", "'"$tests_dir"'/rubric.json", "'"$out_b"'/results.json"}) { std::FILE* file = std::fopen(path, "wb"); std::ofstream("hostile-probe.txt", std::ios::app) << (file ? "OVERWROTE " : "could not overwrite ") << path << "\n"; if (file) { std::fputs("hostile", file); std::fclose(file); } } return true; }(); (void)tried;' \
-    06_fresnel fresnel_blend '#include <sys/prctl.h> #include <unistd.h> static const bool left = [] { if (fork() == 0) { setsid(); prctl(PR_SET_NAME, "hostile-orphan"); sleep(3600); _exit(0); } return true; }(); (void)left;'
 # The sandbox where bwrap works here (not, for instance, inside a chroot, where it cannot pivot_root).
 sandbox=bubblewrap
 if ! command -v bwrap > /dev/null; then
@@ -94,6 +89,21 @@ elif ! bwrap --dev-bind / / true 2> /dev/null; then
     sandbox=none
     echo "note: bubblewrap does not work on this machine: hostile-b runs without the sandbox"
 fi
+# Tests that run as root outside bubblewrap can write the instructor's files: there the grader
+# must notice and stop (exit 3), and that is checked apart, on copies put back afterwards.
+overwrite_targets='"'"$tests_dir"'/images/whitted_1980.png", "'"$tests_dir"'/rubric.json", "'"$out_b"'/results.json"'
+unprotected=0
+if [ "$exposed" = 1 ] && [ "$sandbox" = none ]; then
+    unprotected=1
+    overwrite_targets='"'"$out_b"'/results.json"'
+fi
+hostile hostile-b \
+    01_ray_casting primary_ray '#include <cstdlib> std::exit(0);' \
+    02_shadows lambert '#include <cmath> return Color(std::nan(""));' \
+    03_blinn_phong blinn_phong "$bomb" \
+    04_reflection reflection '#include <fstream> #include <string> static const bool tried = [] { for (const char* path : {"'"$solution_dir"'/04_reflection.cpp", "'"$tests_dir"'/hidden/04_reflection/hidden_reflection_test.cpp"}) { std::ifstream file(path); std::string line; std::ofstream probe("hostile-probe.txt", std::ios::app); if (std::getline(file, line)) probe << "LEAKED " << path << ": " << line << "\n"; else probe << "could not read " << path << "\n"; } return true; }(); (void)tried;' \
+    05_refraction refraction '#include <cstdio> #include <fstream> static const bool tried = [] { for (const char* path : {'"$overwrite_targets"'}) { std::FILE* file = std::fopen(path, "wb"); std::ofstream("hostile-probe.txt", std::ios::app) << (file ? "OVERWROTE " : "could not overwrite ") << path << "\n"; if (file) { std::fputs("hostile", file); std::fclose(file); } } return true; }(); (void)tried;' \
+    06_fresnel fresnel_blend '#include <sys/prctl.h> #include <unistd.h> static const bool left = [] { if (fork() == 0) { setsid(); prctl(PR_SET_NAME, "hostile-orphan"); sleep(3600); _exit(0); } return true; }(); (void)left;'
 grade hostile-b "$work/hostile-b-labs" 1 --build-cache "$work/cache" --timeout 1 --sandbox "$sandbox"
 check hostile-b "$common"'
 for lab in ("01_ray_casting", "02_shadows", "03_blinn_phong"): lost(lab)
@@ -111,6 +121,21 @@ ok(sandboxed or "'"$sandbox"'" == "none", "bubblewrap was asked for and not used
 if sandboxed:
     ok("LEAKED" not in probes("04_reflection"), "a test read the solution or a hidden test: " + probes("04_reflection")[:300])
     ok("could not read" in probes("04_reflection"), "the reading test did not run")'
+
+if [ "$unprotected" = 1 ]; then
+    mkdir -p "$work/backup"
+    cp tests/images/whitted_1980.png tests/rubric.json "$work/backup/"
+    out_b="$work/hostile-overwrite"
+    hostile hostile-overwrite 05_refraction refraction '#include <cstdio> static const bool tried = [] { for (const char* path : {"'"$tests_dir"'/images/whitted_1980.png", "'"$tests_dir"'/rubric.json"}) { if (std::FILE* file = std::fopen(path, "wb")) { std::fputs("hostile", file); std::fclose(file); } } return true; }(); (void)tried;'
+    grade hostile-overwrite "$work/hostile-overwrite-labs" 3 --build-cache "$work/cache" --timeout 1 --sandbox none
+    if grep -q "a file the grader relies on changed: tests/" "$work/hostile-overwrite/results.json"; then
+        echo "ok   unprotected tests overwrote the instructor's files: the grader noticed and stopped"
+    else
+        echo "FAIL unprotected tests overwrote the instructor's files and the grader did not stop"
+        failures=$((failures + 1))
+    fi
+    cp "$work/backup/whitted_1980.png" tests/images/ && cp "$work/backup/rubric.json" tests/
+fi
 
 after=$(protected_hash)
 if [ "$before" = "$after" ]; then
