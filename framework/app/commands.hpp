@@ -16,6 +16,9 @@ struct Command {
 /// `whitted render SCENE ...`
 Command add_render_command(CLI::App& app);
 
+/// `whitted trace SCENE --pixel X Y ...`
+Command add_trace_command(CLI::App& app);
+
 /// `whitted diff A B [-o DIFF]`
 Command add_diff_command(CLI::App& app);
 

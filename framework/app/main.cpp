@@ -9,7 +9,8 @@ int main(int argc, char** argv) {
     CLI::App app{"whitted: a Whitted-style recursive ray tracer for NFF and P3F scenes."};
     app.footer("Example: whitted render scenes/whitted_1980.p3f -o whitted_1980.png --stats");
     app.require_subcommand(1);
-    const std::vector<whitted::Command> commands = {whitted::add_render_command(app), whitted::add_diff_command(app),
+    const std::vector<whitted::Command> commands = {whitted::add_render_command(app), whitted::add_trace_command(app),
+                                                    whitted::add_diff_command(app),
                                                     whitted::add_generate_command(app), whitted::add_grade_command(app)};
 
     try {

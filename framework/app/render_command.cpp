@@ -1,9 +1,12 @@
 // `whitted render`: render an NFF or P3F scene to an image.
 #include "commands.hpp"
 #include "progress.hpp"
+#include "image_options.hpp"
+#include "stage_choice.hpp"
 #include "whitted/image_pictures.hpp"
 #include "whitted/lab_status.hpp"
 #include "whitted/leaf_kernels.hpp"
+#include "whitted/passes.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
@@ -32,41 +35,11 @@ struct RenderOptions {
     std::string stats_json; // --stats-json FILE: timings and ray counts for scripts (make bench)
     bool quiet = false;
     bool srgb = false;
+    std::optional<Pass> pass; // --pass NAME: a diagnostic picture instead of the colour
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The output resolution: the file's, unless --width/--height say otherwise
-// (one of them alone keeps the file's aspect ratio).
-std::pair<int, int> output_size(const Camera& camera, const RenderOptions& options) {
-    if (options.width && options.height) return {*options.width, *options.height};
-    if (options.width) return {*options.width, std::max(1, static_cast<int>(std::lround(*options.width * double(camera.res_y) / camera.res_x)))};
-    if (options.height) return {std::max(1, static_cast<int>(std::lround(*options.height * double(camera.res_x) / camera.res_y))), *options.height};
-    return {camera.res_x, camera.res_y};
-}
-
-// Checks an output path before rendering, so a typo does not cost a whole render.
-std::string check_output_path(const std::string& path) {
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) return "the image is a folder: " + path;
-    std::string extension = std::filesystem::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".png" && extension != ".ppm" && extension != ".pfm")
-        return "the image must end in .png, .ppm or .pfm: " + path;
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (!folder.empty() && std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error))
-        return "not a folder, so the image cannot go in it: " + folder.string();
-    if (!folder.empty() && !std::filesystem::is_directory(folder, error))
-        return "no such folder for the image: " + folder.string();
-    // Found now rather than after the whole render.
-    const bool exists = std::filesystem::exists(path, error);
-    if (exists && !std::filesystem::is_regular_file(path, error))
-        return "not a regular file (a device or pipe cannot hold the image): " + path;
-    if (access(exists ? path.c_str() : (folder.empty() ? "." : folder.c_str()), W_OK) != 0)
-        return "cannot write the image (no permission): " + path;
-    return {};
 }
 
 void print_stats(const RenderResult& result) {
@@ -111,53 +84,18 @@ bool write_stats_json(const StatsRecord& r, const std::string& path) {
     return static_cast<bool>(out.flush());
 }
 
-// Lists the labs that are not done yet, one per line.
-std::string missing_labs(const std::vector<LabStatus>& labs, int up_to) {
-    std::string text;
-    for (const LabStatus& lab : labs)
-        if (lab.number <= up_to && !lab.done)
-            text += "  lab " + std::to_string(lab.number) + " (" + lab.title + "): " + lab.message + "\n";
-    return text;
-}
-
-// The stage to render: the one asked for, or the highest whose labs are all
-// done. Explains what is missing instead of failing inside the render.
-std::optional<int> choose_stage(const RenderOptions& options) {
-    const std::vector<LabStatus> labs = probe_labs();
-    const int ready = highest_complete_stage(labs);
-    if (options.stage) {
-        if (*options.stage <= ready) return options.stage;
-        const std::string needed = *options.stage == 1 ? "lab 1" : "labs 1 to " + std::to_string(*options.stage);
-        std::fprintf(stderr, "whitted: stage %d needs %s, and these are not done yet:\n%s", *options.stage,
-                     needed.c_str(), missing_labs(labs, *options.stage).c_str());
-        if (ready > 0) std::fprintf(stderr, "Finish them, or render an earlier stage with --stage %d.\n", ready);
-        return std::nullopt;
-    }
-    if (ready == 0) {
-        std::fprintf(stderr, "whitted: nothing can be rendered before lab 1 is done:\n%s", missing_labs(labs, 1).c_str());
-        return std::nullopt;
-    }
-    if (ready < 6) {
-        std::fprintf(stderr, "note: rendering stage %d (labs 1 to %d); these labs are not done yet:\n%s", ready, ready,
-                     missing_labs(labs, 6).c_str());
-    }
-    return ready;
-}
-
 int run_render(const RenderOptions& options) {
     const auto load_start = std::chrono::steady_clock::now();
     LoadedScene loaded = load_scene(options.scene);
     for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-    auto [width, height] = output_size(loaded.data.camera, options);
-    // One of --width/--height with the scene's aspect ratio can ask for a huge other side.
-    if (width > 16384 || height > 16384 || static_cast<std::size_t>(width) * height > SceneLimits{}.max_pixels) {
-        std::fprintf(stderr, "whitted: the image would be %d x %d pixels; the limit is 16384 per side and %zu in all\n",
-                     width, height, SceneLimits{}.max_pixels);
+    auto [width, height] = output_size(loaded.data.camera, options.width, options.height);
+    if (const std::string problem = check_output_size(width, height); !problem.empty()) {
+        std::fprintf(stderr, "whitted: %s\n", problem.c_str());
         return 2;
     }
     loaded.data.camera = loaded.data.camera.with_resolution(width, height);
     // Scene errors come first: they are the user's to fix whatever the labs' state.
-    const std::optional<int> stage = choose_stage(options);
+    const std::optional<int> stage = choose_stage(options.stage, options.pass);
     if (!stage) return 1;
     RenderSettings settings;
     settings.stage = *stage;
@@ -170,19 +108,35 @@ int run_render(const RenderOptions& options) {
     const double load_seconds = seconds_since(load_start);
 
     ProgressBar bar(stderr, !options.quiet && isatty(fileno(stderr)));
-    RenderResult result = render(scene, settings, options.threads, [&](double done) { bar.update(done); });
+    const auto show_progress = [&](double done) { bar.update(done); };
+    std::string pass_summary;
+    RenderResult result;
+    if (options.pass) {
+        PassResult pass = render_pass(scene, settings, *options.pass, options.threads, show_progress);
+        result = std::move(pass.render);
+        pass_summary = std::move(pass.summary);
+    } else {
+        result = render(scene, settings, options.threads, show_progress);
+    }
     bar.finish();
 
-    const std::string output = options.output.empty()
-                                   ? std::filesystem::path(options.scene).stem().string() + ".png"
-                                   : options.output;
+    const std::string stem = std::filesystem::path(options.scene).stem().string();
+    const std::string output = !options.output.empty() ? options.output
+                               : options.pass ? stem + "_" + std::string(pass_info(*options.pass).name) + ".png"
+                                              : stem + ".png";
     // A NaN or infinite colour is a bug in the shading code: show it, loudly.
     const std::size_t broken = count_non_finite(result.image);
     write_image(with_broken_pixels_marked(result.image), output, options.srgb ? Encoding::srgb : Encoding::linear);
     if (!options.quiet) {
-        std::printf("wrote %s (%dx%d, stage %d): rendered in %.3f s, scene loaded and built in %.3f s\n",
+        std::printf("wrote %s (%dx%d, stage %d%s%s): rendered in %.3f s, scene loaded and built in %.3f s\n",
                     std::filesystem::absolute(output).lexically_normal().c_str(), width, height, *stage,
+                    options.pass ? ", pass " : "", options.pass ? std::string(pass_info(*options.pass).name).c_str() : "",
                     result.seconds, load_seconds);
+        if (options.pass) {
+            std::printf("%s: %s\n", std::string(pass_info(*options.pass).name).c_str(),
+                        std::string(pass_info(*options.pass).legend).c_str());
+            if (!pass_summary.empty()) std::printf("%s\n", pass_summary.c_str());
+        }
     }
     if (options.stats) print_stats(result);
     if (!options.stats_json.empty()) {
@@ -225,19 +179,7 @@ Command add_render_command(CLI::App& app) {
     render_command->add_option("--min-weight", options->min_weight,
                                "Skip secondary rays whose accumulated weight is below this (Whitted's adaptive "
                                "depth control; 0 = trace every ray down to the maximum depth; default 1/1024)")
-        ->check(CLI::Validator(
-            [](std::string& text) -> std::string {
-                double value = -1.0;
-                std::size_t used = 0;
-                try {
-                    value = std::stod(text, &used);
-                } catch (...) {
-                }
-                // The whole text must be the number: 0.5abc is not 0.5.
-                const bool ok = used == text.size() && value >= 0.0 && value <= 1.0;
-                return ok ? "" : "expected a number from 0 to 1, found " + text;
-            },
-            "0..1"));
+        ->check(min_weight_validator());
     render_command->add_option("--threads", options->threads, "Rendering threads; 0 = one per core (default 0)")
         ->check(CLI::Range(0, 1024));
     render_command->add_option("--stage", options->stage,
@@ -255,6 +197,20 @@ Command add_render_command(CLI::App& app) {
                 return {};
             },
             "FILE"));
+    std::string pass_names;
+    for (const PassInfo& info : all_passes()) pass_names += (pass_names.empty() ? "" : "|") + std::string(info.name);
+    render_command
+        ->add_option_function<std::string>(
+            "--pass", [options](const std::string& name) { options->pass = find_pass(name); },
+            "Draw a diagnostic picture instead of the colour: normal, depth, albedo, shadow (is_lit), reflectance, "
+            "fresnel, ray-depth, object-id or cost (intersection tests); the command prints how to read it "
+            "(default name: SCENE_PASS.png)")
+        ->type_name("PASS")
+        ->check(CLI::Validator(
+            [pass_names](const std::string& name) -> std::string {
+                return find_pass(name) ? "" : "expected one of " + pass_names + ", found " + name;
+            },
+            "PASS"));
     render_command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary line");
     render_command->add_flag("--srgb", options->srgb, "Write sRGB-encoded 8-bit values (default: linear, as in the course)");
 

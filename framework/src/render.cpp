@@ -17,7 +17,13 @@ constexpr int kTileSize = 16;
 
 RenderResult render(const Scene& scene, const RenderSettings& settings, int threads,
                     const ProgressCallback& progress) {
-    const Camera& camera = scene.camera();
+    return render_pixels(scene.camera(), threads, progress, [&](RayStats& stats) -> PixelFunction {
+        return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
+    });
+}
+
+RenderResult render_pixels(const Camera& camera, int threads, const ProgressCallback& progress,
+                           const std::function<PixelFunction(RayStats& stats)>& make_pixel_function) {
     RenderResult result;
     result.image = Image(camera.res_x, camera.res_y);
     const int tiles_x = (camera.res_x + kTileSize - 1) / kTileSize;
@@ -33,14 +39,14 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, int thre
     const auto start = std::chrono::steady_clock::now();
 
     auto render_tiles = [&](int thread_index) {
-        const Tracer tracer(scene, settings, stats[thread_index]);
+        const PixelFunction pixel = make_pixel_function(stats[thread_index]);
         for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {
             const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
             const int x1 = std::min(x0 + kTileSize, camera.res_x), y1 = std::min(y0 + kTileSize, camera.res_y);
             for (int row = y0; row < y1; ++row) {
                 // Image rows go top-down; the slides' viewport y goes bottom-up.
                 const int y = camera.res_y - 1 - row;
-                for (int x = x0; x < x1; ++x) result.image.at(x, row) = tracer.trace_pixel(x + 0.5, y + 0.5);
+                for (int x = x0; x < x1; ++x) result.image.at(x, row) = pixel(x + 0.5, y + 0.5);
             }
             const int done = ++tiles_done;
             if (progress) {

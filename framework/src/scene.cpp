@@ -102,6 +102,27 @@ bool Scene::occluded(const Ray& ray, Interval t_range) const {
     return blocked;
 }
 
+QueryCost Scene::query_cost(const Ray& ray, Interval t_range, bool any_hit) const {
+    const std::span<const Primitive> all = data_.primitives;
+    QueryCost cost;
+    std::uint64_t nodes = 0;
+    // The same order as closest_hit() and occluded(): the planes, then the BVH.
+    const std::span<const Primitive> planes = all.subspan(bounded_count_);
+    cost.primitive_tests = planes.size();
+    if (const std::optional<Hit> hit = whitted::closest_hit(ray, planes, t_range)) {
+        if (any_hit) return cost;
+        t_range.max = hit->t;
+    }
+    bvh_.traverse_counting(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+        cost.primitive_tests += count;
+        if (const std::optional<Hit> hit = whitted::closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max}))
+            return any_hit ? -1.0 : hit->t;
+        return t_max;
+    }, nodes);
+    cost.box_tests = nodes * WideBvh::kWidth;
+    return cost;
+}
+
 bool Scene::occluded_with_kernels(const Ray& ray, Interval t_range) const {
     return kernels_->occluded(SceneView{data_.primitives, bounded_count_, bvh_}, ray, t_range);
 }

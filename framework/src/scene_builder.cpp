@@ -148,6 +148,7 @@ void SceneBuilder::add_shape(const Token& at, const Shape& shape, std::int32_t v
     primitive.shape = shape;
     primitive.material = static_cast<std::uint32_t>(data().materials.size() - 1);
     primitive.vertex_normals = vertex_normals;
+    primitive.line = static_cast<std::uint32_t>(at.line);
     data().primitives.push_back(primitive);
 }
 

@@ -2,6 +2,8 @@
 
 #include "whitted/labs.hpp"
 
+#include <utility>
+
 namespace whitted {
 
 RayStats& RayStats::operator+=(const RayStats& other) {
@@ -25,33 +27,45 @@ void RayStats::count(RayKind kind) {
 Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
     const Color parent_weight = path_weight_;
     const Color path_weight = parent_weight * weight;
-    if (kind != RayKind::eye && glm::all(glm::lessThan(path_weight, Color(settings_.min_weight)))) return Color(0.0);
-    if (!within_budget()) return Color(0.0);
+    const int node = record_ray(ray, Interval{}, depth, kind, weight);
+    RayFate fate = RayFate::traced;
+    if (kind != RayKind::eye && glm::all(glm::lessThan(path_weight, Color(settings_.min_weight))))
+        fate = RayFate::below_min_weight;
+    else if (!within_budget())
+        fate = RayFate::over_budget;
+    if (fate != RayFate::traced) {
+        if (tree_) tree_->nodes[node].fate = fate;
+        return Color(0.0);
+    }
     stats_.count(kind);
     path_weight_ = path_weight;
-    const Color color = shade(ray, depth);
+    const int parent_node = std::exchange(current_node_, node);
+    const Color color = weight * shade(ray, depth);
+    current_node_ = parent_node;
     path_weight_ = parent_weight;
-    return weight * color;
+    if (tree_) tree_->nodes[node].color = color;
+    return color;
 }
 
 // The recursion of the slides: closest hit, local colour, then secondary rays.
 Color Tracer::shade(const Ray& ray, int depth) const {
     const std::optional<Hit> hit = scene_.closest_hit(ray);
+    if (tree_) tree_->nodes[current_node_].hit = hit;
     if (!hit) return scene_.background();
     const Material& material = scene_.material(*hit);
     const Vec3 wo = -ray.direction;
     const int stage = settings_.stage;
 
     // Local colour: flat (lab 1), Lambert with shadows (lab 2), Blinn-Phong (lab 3 on).
-    if (stage == 1) return material.color_at(hit->point);
-    Color color = stage == 2 ? lambert(*this, *hit) : blinn_phong(*this, *hit, wo);
+    if (stage == 1) return noted(&RayNode::local, material.color_at(hit->point));
+    Color color = noted(&RayNode::local, stage == 2 ? lambert(*this, *hit) : blinn_phong(*this, *hit, wo));
     if (stage < 4 || depth >= settings_.max_depth) return color;
 
     // Secondary rays, one level deeper.
     const bool transparent = material.transmittance > 0.0;
-    if (stage >= 6 && transparent) return color + fresnel_blend(*this, *hit, wo, depth);
-    if (material.specular > 0.0) color += reflection(*this, *hit, wo, depth);
-    if (stage >= 5 && transparent) color += refraction(*this, *hit, wo, depth);
+    if (stage >= 6 && transparent) return color + noted(&RayNode::fresnel, fresnel_blend(*this, *hit, wo, depth));
+    if (material.specular > 0.0) color += noted(&RayNode::reflection, reflection(*this, *hit, wo, depth));
+    if (stage >= 5 && transparent) color += noted(&RayNode::refraction, refraction(*this, *hit, wo, depth));
     return color;
 }
 
@@ -59,6 +73,8 @@ Color Tracer::trace_pixel(double x, double y) const {
     path_weight_ = Color(1.0);
     pixel_rays_ = 0;
     pixel_cut_short_ = false;
+    if (tree_) tree_->clear();
+    current_node_ = -1;
     const Color color = trace(primary_ray(scene_.camera(), x, y), 1, RayKind::eye, Color(1.0));
     if (pixel_cut_short_) ++stats_.pixels_cut_short;
     return color;
@@ -71,9 +87,47 @@ bool Tracer::within_budget() const {
 }
 
 bool Tracer::occluded(const Ray& ray, double distance) const {
-    if (!within_budget()) return true; // over budget: no more light is gathered for this pixel
+    const Interval t_range{0.0, distance * (1.0 - 1e-6)};
+    if (!within_budget()) { // over budget: no more light is gathered for this pixel
+        record_feeler(ray, t_range, distance, RayFate::over_budget, true);
+        return true;
+    }
     stats_.count(RayKind::shadow);
-    return scene_.occluded(ray, Interval{0.0, distance * (1.0 - 1e-6)});
+    const bool blocked = scene_.occluded(ray, t_range);
+    record_feeler(ray, t_range, distance, RayFate::traced, blocked);
+    return blocked;
+}
+
+int Tracer::record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight) const {
+    if (!tree_) return -1;
+    RayNode node;
+    node.kind = kind;
+    node.depth = depth;
+    node.parent = current_node_;
+    node.ray = ray;
+    node.t_range = t_range;
+    node.weight = weight;
+    node.path_weight = path_weight_ * weight;
+    const int index = static_cast<int>(tree_->nodes.size());
+    if (current_node_ >= 0) tree_->nodes[current_node_].children.push_back(index);
+    tree_->nodes.push_back(std::move(node));
+    return index;
+}
+
+void Tracer::record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked) const {
+    if (!tree_) return;
+    const int depth = current_node_ >= 0 ? tree_->nodes[current_node_].depth : 1;
+    RayNode& node = tree_->nodes[record_ray(ray, t_range, depth, RayKind::shadow, Color(1.0))];
+    node.fate = fate;
+    node.light_distance = distance;
+    node.blocked = blocked;
+    // Which surface is in the way, and where: the answer to "why is this point dark?".
+    if (blocked && fate == RayFate::traced) node.hit = scene_.closest_hit(ray, t_range);
+}
+
+Color Tracer::noted(std::optional<Color> RayNode::*part, const Color& color) const {
+    if (tree_ && current_node_ >= 0) tree_->nodes[current_node_].*part = color;
+    return color;
 }
 
 } // namespace whitted

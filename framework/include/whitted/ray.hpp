@@ -13,7 +13,7 @@ struct Ray {
     Point3 at(double t) const { return origin + t * direction; }
 };
 
-/// What a ray is for; used only to count rays in `--stats`.
+/// What a ray is for: counted in `--stats`, named in the ray tree (`whitted trace`).
 enum class RayKind { eye, shadow, reflected, refracted };
 
 } // namespace whitted

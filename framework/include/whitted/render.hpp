@@ -27,4 +27,13 @@ using ProgressCallback = std::function<void(double fraction_done)>;
 RenderResult render(const Scene& scene, const RenderSettings& settings, int threads = 0,
                     const ProgressCallback& progress = {});
 
+/// The colour of the pixel whose centre is at viewport position (x, y) (see primary_ray).
+using PixelFunction = std::function<Color(double x, double y)>;
+
+/// The same pixel loop for any per-pixel computation (the diagnostic passes):
+/// `make_pixel_function` is called once per thread with that thread's ray
+/// counts and returns the function that computes its pixels.
+RenderResult render_pixels(const Camera& camera, int threads, const ProgressCallback& progress,
+                           const std::function<PixelFunction(RayStats& stats)>& make_pixel_function);
+
 } // namespace whitted

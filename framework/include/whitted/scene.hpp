@@ -32,6 +32,14 @@ struct SceneData {
     int samples_per_pixel = 1;    // P3F `spp` (rendering uses 1 for now)
 };
 
+/// The intersection tests one ray query makes (the `cost` pass).
+struct QueryCost {
+    std::uint64_t box_tests = 0;       // ray-box tests in the BVH (four per node visited)
+    std::uint64_t primitive_tests = 0; // ray-primitive tests: the shapes in the leaves reached, and every plane
+
+    std::uint64_t total() const { return box_tests + primitive_tests; }
+};
+
 class Scene {
   public:
     /// Takes the data and builds the acceleration structure over its primitives.
@@ -57,6 +65,10 @@ class Scene {
 
     /// True when any surface lies along the ray with t inside t_range.
     bool occluded(const Ray& ray, Interval t_range) const;
+
+    /// Runs closest_hit (or, when `any_hit`, occluded) through the labs' code
+    /// and counts its intersection tests.
+    QueryCost query_cost(const Ray& ray, Interval t_range, bool any_hit) const;
 
   private:
     std::optional<Hit> closest_hit_with_kernels(const Ray& ray, Interval t_range) const;

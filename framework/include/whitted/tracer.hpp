@@ -5,9 +5,10 @@
 // the local colour, then the reflected and refracted contributions) so that
 // each lab can replace one piece of it. The labs receive a `Tracer` to cast
 // shadow feelers and to call `trace()` again for secondary rays; it also counts
-// rays for `--stats`.
+// rays for `--stats` and, when given a RayTree, records every ray it casts.
 #pragma once
 
+#include "whitted/ray_tree.hpp"
 #include "whitted/scene.hpp"
 
 #include <cstdint>
@@ -45,9 +46,10 @@ struct RenderSettings {
 
 class Tracer {
   public:
-    /// A tracer for one thread: `stats` receives this thread's ray counts.
-    Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats)
-        : scene_(scene), settings_(settings), stats_(stats) {}
+    /// A tracer for one thread: `stats` receives this thread's ray counts and
+    /// `tree`, when given, the ray tree of the last pixel traced.
+    Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats, RayTree* tree = nullptr)
+        : scene_(scene), settings_(settings), stats_(stats), tree_(tree) {}
 
     const Scene& scene() const { return scene_; }
     const RenderSettings& settings() const { return settings_; }
@@ -69,9 +71,17 @@ class Tracer {
   private:
     Color shade(const Ray& ray, int depth) const;
 
+    // Ray tree recording (no-ops without a tree).
+    int record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight) const;
+    void record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked) const;
+    /// Returns `color` after writing it into the ray being shaded as one of its parts.
+    Color noted(std::optional<Color> RayNode::*part, const Color& color) const;
+
     const Scene& scene_;
     const RenderSettings& settings_;
     RayStats& stats_;
+    RayTree* tree_ = nullptr;
+    mutable int current_node_ = -1;         // the ray being shaded, in tree_
     /// Counts one more ray for the current pixel; false once the pixel is over budget.
     bool within_budget() const;
 

@@ -55,16 +55,27 @@ class WideBvh {
     /// boxes first, calling `leaf(first, count, t_max)`; the callback returns the
     /// new t_max (smaller after a hit) or a negative number to stop.
     template <bool kNearestFirst = true, class LeafFn>
-    void traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf) const;
+    void traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf) const {
+        traverse_impl<kNearestFirst, false>(ray, t_min, t_max, leaf, nullptr);
+    }
+
+    /// traverse(), also adding to `nodes_tested` each node whose four boxes it tests (the `cost` pass).
+    template <class LeafFn>
+    void traverse_counting(const Ray& ray, double t_min, double t_max, LeafFn&& leaf, std::uint64_t& nodes_tested) const {
+        traverse_impl<true, true>(ray, t_min, t_max, leaf, &nodes_tested);
+    }
 
   private:
+    template <bool kNearestFirst, bool kCount, class LeafFn>
+    void traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& leaf, std::uint64_t* nodes_tested) const;
+
     std::vector<Node> nodes_;
     std::uint32_t root_count_ = 0; // primitives when the root is a leaf (nodes_ empty)
     double extent_ = 0.0;
 };
 
-template <bool kNearestFirst, class LeafFn>
-void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf) const {
+template <bool kNearestFirst, bool kCount, class LeafFn>
+void WideBvh::traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& leaf, std::uint64_t* nodes_tested) const {
     if (nodes_.empty()) {
         if (root_count_ > 0) leaf(0u, root_count_, t_max);
         return;
@@ -81,6 +92,7 @@ void WideBvh::traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf
         // Descend through inner nodes, nearest child first, pushing the others.
         while (!(current & kLeafFlag)) {
             const Node& node = nodes_[current];
+            if constexpr (kCount) ++*nodes_tested;
             float t_entry[kWidth];
             unsigned mask = wide.hit_boxes(node.bounds, t_entry);
             if (mask == 0) goto pop;

@@ -1,0 +1,88 @@
+// The physics checks next to each ray of `whitted trace`, computed by the
+// framework on its own (not by the labs' code), so that they can disagree.
+#include "trace/ray_tree_report.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <type_traits>
+#include <variant>
+
+namespace whitted {
+namespace {
+
+double degrees_between(const Vec3& a, const Vec3& b) {
+    const double length = glm::length(a) * glm::length(b);
+    if (!(length > 0.0)) return 0.0;
+    return std::acos(glm::clamp(glm::dot(a, b) / length, -1.0, 1.0)) * 180.0 / kPi;
+}
+
+} // namespace
+
+std::string object_name(const TraceContext& context, std::uint32_t primitive) {
+    const Primitive& p = context.scene.primitives()[primitive];
+    const char* shape = std::visit(
+        [](const auto& s) -> const char* {
+            using S = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<S, Sphere>) return "sphere";
+            else if constexpr (std::is_same_v<S, Plane>) return "plane";
+            else if constexpr (std::is_same_v<S, Triangle>) return "triangle";
+            else if constexpr (std::is_same_v<S, Box>) return "box";
+            else return "cone";
+        },
+        p.shape);
+    if (p.line == 0) return std::string(shape) + " #" + std::to_string(p.id);
+    return std::string(shape) + " (" + std::filesystem::path(context.scene_path).filename().string() + ":" +
+           std::to_string(p.line) + ")";
+}
+
+std::optional<DirectionCheck> check_direction(const RayTree& tree, int index, const TraceContext& context) {
+    const RayNode& node = tree.nodes[index];
+    if ((node.kind != RayKind::reflected && node.kind != RayKind::refracted) || node.parent < 0) return std::nullopt;
+    const RayNode& parent = tree.nodes[node.parent];
+    if (!parent.hit) return std::nullopt;
+    const Hit& hit = *parent.hit;
+    const Vec3 wo = -parent.ray.direction;
+    const Vec3& n = hit.normal;
+    const double cos_theta_i = glm::dot(wo, n);
+    DirectionCheck check;
+    check.theta_i = degrees_between(wo, n);
+    if (node.kind == RayKind::reflected) {
+        check.law = "mirror law";
+        check.theta_out = degrees_between(node.ray.direction, n);
+        check.expected = 2.0 * cos_theta_i * n - wo;
+    } else {
+        // Snell's law, sin(theta_t) = eta_i / eta_t sin(theta_i), in vector form.
+        const Material& material = context.scene.material(hit);
+        check.law = "Snell's law";
+        check.eta_i = hit.front_face ? 1.0 : material.ior;
+        check.eta_t = hit.front_face ? material.ior : 1.0;
+        check.theta_out = degrees_between(node.ray.direction, -n);
+        const double eta = check.eta_i / check.eta_t;
+        const double sin2_theta_t = eta * eta * std::max(0.0, 1.0 - cos_theta_i * cos_theta_i);
+        if (sin2_theta_t <= 1.0)
+            check.expected = glm::normalize(eta * (cos_theta_i * n - wo) - std::sqrt(1.0 - sin2_theta_t) * n);
+    }
+    if (check.expected) {
+        check.off_degrees = degrees_between(node.ray.direction, *check.expected);
+        check.agrees = check.off_degrees < 0.01;
+    }
+    return check;
+}
+
+bool blocked_by_own_surface(const RayTree& tree, int index, const TraceContext& context) {
+    const RayNode& node = tree.nodes[index];
+    if (node.kind != RayKind::shadow || !node.blocked || !node.hit || node.parent < 0) return false;
+    const RayNode& parent = tree.nodes[node.parent];
+    if (!parent.hit || parent.hit->primitive != node.hit->primitive) return false;
+    // A feeler only goes towards a light in front of the surface, and a convex
+    // shape cannot stand between its own point and such a light: meeting the
+    // same shape again is the rounding error of lab 2. Open cones and spheres
+    // turned inside out are not convex from their front side, but there too a
+    // hit just after the start (a tiny t) is the rounding error.
+    const Shape& shape = context.scene.primitives()[node.hit->primitive].shape;
+    const Sphere* sphere = std::get_if<Sphere>(&shape);
+    const bool convex = !std::holds_alternative<Cone>(shape) && !(sphere && sphere->inward);
+    return convex || node.hit->t < 1e-6 * (1.0 + max_abs_component(node.ray.origin));
+}
+
+} // namespace whitted

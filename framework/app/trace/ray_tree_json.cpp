@@ -1,0 +1,91 @@
+// The ray tree as JSON: one object per ray, its children nested inside.
+#include "trace/ray_tree_report.hpp"
+
+namespace whitted {
+namespace {
+
+using nlohmann::json;
+
+// Numbers that are not finite become null, as JSON has no NaN.
+json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+json vec(const Vec3& v) { return json::array({number(v.x), number(v.y), number(v.z)}); }
+
+const char* kind_name(RayKind kind) {
+    switch (kind) {
+    case RayKind::eye: return "eye";
+    case RayKind::shadow: return "shadow";
+    case RayKind::reflected: return "reflected";
+    case RayKind::refracted: return "refracted";
+    }
+    return "eye";
+}
+
+const char* fate_name(RayFate fate) {
+    switch (fate) {
+    case RayFate::traced: return "traced";
+    case RayFate::below_min_weight: return "below_min_weight";
+    case RayFate::over_budget: return "over_budget";
+    }
+    return "traced";
+}
+
+json hit_json(const Hit& hit, const TraceContext& context) {
+    return {{"object", object_name(context, hit.primitive)},
+            {"line", context.scene.primitives()[hit.primitive].line},
+            {"t", number(hit.t)},
+            {"point", vec(hit.point)},
+            {"normal", vec(hit.normal)},
+            {"front_face", hit.front_face}};
+}
+
+json node_json(const RayTree& tree, int index, const TraceContext& context) {
+    const RayNode& node = tree.nodes[index];
+    json j = {{"kind", kind_name(node.kind)},
+              {"depth", node.depth},
+              {"origin", vec(node.ray.origin)},
+              {"direction", vec(node.ray.direction)},
+              {"weight", vec(node.weight)},
+              {"path_weight", vec(node.path_weight)},
+              {"fate", fate_name(node.fate)}};
+    if (node.hit) j[node.kind == RayKind::shadow ? "blocker" : "hit"] = hit_json(*node.hit, context);
+    if (node.kind == RayKind::shadow) {
+        j["light_distance"] = number(node.light_distance);
+        j["blocked"] = node.blocked;
+        j["blocked_by_own_surface"] = blocked_by_own_surface(tree, index, context);
+    } else {
+        if (node.local) j["local"] = vec(*node.local);
+        if (node.reflection) j["reflection"] = vec(*node.reflection);
+        if (node.refraction) j["refraction"] = vec(*node.refraction);
+        if (node.fresnel) j["fresnel"] = vec(*node.fresnel);
+        j["color"] = vec(node.color);
+    }
+    if (const std::optional<DirectionCheck> check = check_direction(tree, index, context)) {
+        j["check"] = {{"law", check->law},
+                      {"theta_i_degrees", number(check->theta_i)},
+                      {"theta_out_degrees", number(check->theta_out)},
+                      {"expected_direction", check->expected ? vec(*check->expected) : json(nullptr)},
+                      {"off_degrees", number(check->off_degrees)},
+                      {"agrees", check->agrees}};
+        if (node.kind == RayKind::refracted) j["check"]["eta_i"] = check->eta_i, j["check"]["eta_t"] = check->eta_t;
+    }
+    json children = json::array();
+    for (int child : node.children) children.push_back(node_json(tree, child, context));
+    j["children"] = std::move(children);
+    return j;
+}
+
+} // namespace
+
+json ray_tree_json(const RayTree& tree, const TraceContext& context) {
+    return {{"scene", context.scene_path},
+            {"pixel", {context.x, context.y}},
+            {"width", context.width},
+            {"height", context.height},
+            {"stage", context.settings.stage},
+            {"max_depth", context.settings.max_depth},
+            {"min_weight", context.settings.min_weight},
+            {"color", vec(tree.nodes.front().color)},
+            {"ray", node_json(tree, 0, context)}};
+}
+
+} // namespace whitted

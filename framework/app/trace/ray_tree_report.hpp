@@ -1,0 +1,65 @@
+// `whitted trace`: one pixel's ray tree as text, as JSON and as a picture.
+//
+// Why: the tree is what a student has to reason about when a pixel is wrong,
+// so it is shown with the physics checked next to each ray: a reflected ray is
+// compared with the mirror law, a refracted one with Snell's law, a shadow
+// feeler that hits its own surface is called out. The checks are the
+// framework's own computations, not the labs' code, so they can disagree.
+#pragma once
+
+#include "whitted/image.hpp"
+#include "whitted/ray_tree.hpp"
+#include "whitted/scene.hpp"
+#include "whitted/tracer.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+
+namespace whitted {
+
+/// What the reports say about the traced pixel besides its tree.
+struct TraceContext {
+    const Scene& scene;
+    const RenderSettings& settings;
+    std::string scene_path;
+    int x = 0, y = 0;          // the pixel: column, and row from the top of the image
+    int width = 0, height = 0; // the image's size
+};
+
+/// "sphere (scenes/x.p3f:12)": the shape and the scene-file line that made it.
+std::string object_name(const TraceContext& context, std::uint32_t primitive);
+
+/// A secondary ray's direction next to the law it should follow.
+struct DirectionCheck {
+    std::string law;                 // "mirror law" or "Snell's law"
+    double eta_i = 1.0, eta_t = 1.0; // Snell's law: the indices on the incoming and the far side
+    double theta_i = 0.0;            // degrees between wo and the normal at the parent's hit
+    double theta_out = 0.0;          // degrees between the traced ray and the normal (its side)
+    std::optional<Vec3> expected;    // the direction the law gives; none: total internal reflection
+    double off_degrees = 0.0;        // angle between the traced and the expected direction
+    bool agrees = false;             // within 0.01 degrees
+};
+
+/// The check of node `index` when it is a reflected or refracted ray.
+std::optional<DirectionCheck> check_direction(const RayTree& tree, int index, const TraceContext& context);
+
+/// True when a blocked shadow feeler was stopped by the very surface it starts on.
+bool blocked_by_own_surface(const RayTree& tree, int index, const TraceContext& context);
+
+/// The tree as indented text, with the checks, for the terminal.
+std::string ray_tree_text(const RayTree& tree, const TraceContext& context);
+
+/// The tree as nested JSON objects (one per ray, children inside).
+nlohmann::json ray_tree_json(const RayTree& tree, const TraceContext& context);
+
+/// Two panels: `eye_view` (the render) with the pixel marked and the rays
+/// drawn over it, and `side_view`, rendered by `side_camera`, with the same rays.
+Image ray_tree_picture(const RayTree& tree, const TraceContext& context, const Image& eye_view, const Image& side_view,
+                       const Camera& side_camera);
+
+/// A camera looking at the whole tree from the side (from the eye camera's right).
+Camera side_camera_for(const RayTree& tree, const Camera& eye_camera, int width, int height);
+
+} // namespace whitted

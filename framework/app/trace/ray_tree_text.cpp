@@ -1,0 +1,168 @@
+// The ray tree as indented text, one ray per branch, checks beside each ray.
+#include "trace/ray_tree_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace whitted {
+namespace {
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", value);
+    return text;
+}
+
+std::string vec(const Vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", v.x, v.y, v.z);
+    return text;
+}
+
+const char* kind_name(RayKind kind) {
+    switch (kind) {
+    case RayKind::eye: return "eye ray";
+    case RayKind::shadow: return "shadow feeler";
+    case RayKind::reflected: return "reflected ray";
+    case RayKind::refracted: return "refracted ray";
+    }
+    return "ray";
+}
+
+// The light a feeler goes to: the one nearest the feeler's end.
+int light_of(const Scene& scene, const RayNode& feeler) {
+    const Point3 end = feeler.ray.at(feeler.light_distance);
+    int best = 0;
+    double best_distance = kInfinity;
+    for (std::size_t i = 0; i < scene.lights().size(); ++i) {
+        const double d = glm::length(scene.lights()[i].position - end);
+        if (d < best_distance) best = static_cast<int>(i), best_distance = d;
+    }
+    return best;
+}
+
+struct TextWriter {
+    const RayTree& tree;
+    const TraceContext& context;
+    std::string out;
+
+    void line(const std::string& prefix, const std::string& text) { out += prefix + text + "\n"; }
+
+    std::string title(int index) const {
+        const RayNode& node = tree.nodes[index];
+        std::string text = kind_name(node.kind);
+        if (node.kind == RayKind::shadow) {
+            const int light = light_of(context.scene, node);
+            text += " to light " + std::to_string(light + 1) + " at " + vec(context.scene.lights()[light].position) +
+                    ", " + number(node.light_distance) + " away: ";
+            if (node.fate == RayFate::over_budget) return text + "not cast (the pixel's ray budget is used up)";
+            if (!node.blocked) return text + "lit";
+            text += "BLOCKED";
+            if (node.hit) text += " by " + object_name(context, node.hit->primitive) + " at t " + number(node.hit->t);
+            if (blocked_by_own_surface(tree, index, context))
+                text += " -- its own surface: self-intersection (shadow acne, lab 2)";
+            return text;
+        }
+        text += " (depth " + std::to_string(node.depth) + ")";
+        if (node.kind != RayKind::eye) text += ", weight " + vec(node.weight);
+        return text;
+    }
+
+    void details(int index, const std::string& prefix) {
+        const RayNode& node = tree.nodes[index];
+        if (node.kind == RayKind::shadow) return;
+        std::string ray = "from " + vec(node.ray.origin) + " along " + vec(node.ray.direction);
+        const double length = glm::length(node.ray.direction);
+        if (!(std::abs(length - 1.0) < 1e-6)) ray += "  <- the direction's length is " + number(length) + ", not 1";
+        line(prefix, ray);
+        if (node.fate == RayFate::below_min_weight) {
+            line(prefix, "not traced: its weight from the eye " + vec(node.path_weight) + " is below --min-weight " +
+                             number(context.settings.min_weight));
+            return;
+        }
+        if (node.fate == RayFate::over_budget) {
+            line(prefix, "not traced: the pixel's budget of rays is used up");
+            return;
+        }
+        if (const std::optional<DirectionCheck> check = check_direction(tree, index, context)) {
+            std::string text = check->law + ": in at " + number(check->theta_i) + " deg from the normal, out at " +
+                               number(check->theta_out) + " deg";
+            if (node.kind == RayKind::refracted)
+                text += "; with eta_i " + number(check->eta_i) + " and eta_t " + number(check->eta_t);
+            if (!check->expected)
+                text += " it gives total internal reflection: no refracted ray should be traced  <- DIFFERS";
+            else if (check->agrees)
+                text += ": ok";
+            else
+                text += " it gives " + vec(*check->expected) + ", " + number(check->off_degrees) +
+                        " deg from the traced direction  <- DIFFERS";
+            line(prefix, text);
+        }
+        if (!node.hit) {
+            line(prefix, "hits nothing: the background " + vec(context.scene.background()));
+        } else {
+            const Hit& hit = *node.hit;
+            line(prefix, "hit " + object_name(context, hit.primitive) + " at t " + number(hit.t) + ": point " +
+                             vec(hit.point) + ", normal " + vec(hit.normal) +
+                             (hit.front_face ? ", front face (from outside)" : ", back face (from inside)"));
+        }
+        std::string colour;
+        if (node.local) colour += "local " + vec(*node.local);
+        if (node.reflection) colour += " + reflection() " + vec(*node.reflection);
+        if (node.refraction) colour += " + refraction() " + vec(*node.refraction);
+        if (node.fresnel) colour += " + fresnel_blend() " + vec(*node.fresnel);
+        if (node.kind != RayKind::eye) colour += (colour.empty() ? "" : ", ") + std::string("times the weight");
+        line(prefix, colour + (colour.empty() ? "" : ": ") + "returns " + vec(node.color));
+        note_missing_refraction(index, prefix);
+    }
+
+    // A transparent surface with no refracted ray: total internal reflection, or a bug.
+    void note_missing_refraction(int index, const std::string& prefix) {
+        const RayNode& node = tree.nodes[index];
+        const RenderSettings& settings = context.settings;
+        if (!node.hit || settings.stage < 5 || node.depth >= settings.max_depth) return;
+        const Material& material = context.scene.material(*node.hit);
+        if (material.transmittance <= 0.0) return;
+        for (int child : node.children)
+            if (tree.nodes[child].kind == RayKind::refracted) return;
+        const double eta = node.hit->front_face ? 1.0 / material.ior : material.ior;
+        const double cos_theta_i = glm::dot(-node.ray.direction, node.hit->normal);
+        const double sin_theta_t = eta * std::sqrt(std::max(0.0, 1.0 - cos_theta_i * cos_theta_i));
+        line(prefix, "no refracted ray: " +
+                         (sin_theta_t > 1.0 ? std::string("Snell's law gives total internal reflection here: ok")
+                                            : "Snell's law gives sin(theta_t) = " + number(sin_theta_t) +
+                                                  " < 1, so a refracted ray was expected  <- DIFFERS"));
+    }
+
+    void node(int index, const std::string& head, const std::string& rest) {
+        const RayNode& n = tree.nodes[index];
+        line(head, title(index));
+        details(index, rest + (n.children.empty() ? "    " : "|   "));
+        for (std::size_t k = 0; k < n.children.size(); ++k) {
+            const bool last = k + 1 == n.children.size();
+            node(n.children[k], rest + (last ? "`-- " : "|-- "), rest + (last ? "    " : "|   "));
+        }
+    }
+};
+
+} // namespace
+
+std::string ray_tree_text(const RayTree& tree, const TraceContext& context) {
+    TextWriter writer{tree, context, {}};
+    const Color& colour = tree.nodes.front().color;
+    const std::string in_image =
+        is_finite(colour) ? std::to_string(to_byte(colour.r, Encoding::linear)) + " " +
+                                std::to_string(to_byte(colour.g, Encoding::linear)) + " " +
+                                std::to_string(to_byte(colour.b, Encoding::linear))
+                          : "magenta: NaN or infinite, a bug";
+    writer.line("", "pixel (" + std::to_string(context.x) + ", " + std::to_string(context.y) + ") of " +
+                        std::to_string(context.width) + "x" + std::to_string(context.height) + ", stage " +
+                        std::to_string(context.settings.stage) + ", max depth " +
+                        std::to_string(context.settings.max_depth) + ": colour " + vec(colour) + ", in the image " +
+                        in_image);
+    writer.line("", "");
+    writer.node(0, "", "");
+    return writer.out;
+}
+
+} // namespace whitted
