@@ -3,6 +3,7 @@
 #   make test     the same set-up, then every test through CTest
 #   make handout OUT=dir, make proofs, make references: for instructors
 #   make test-grader  end-to-end check of `whitted grade` (CI, after make test)
+#   make test-report  the grader's report.html opened in headless Chromium (CI)
 #   make bench    time whitted against POV-Ray and Embree (docs/instructors.md, "Benchmark")
 #   make sanitize every test built with AddressSanitizer + UBSan (docs/robustness.md)
 #   make fuzz     fuzz the loaders and the image reader, MINUTES each (docs/robustness.md)
@@ -21,7 +22,7 @@ BENCH_ARGS ?=
 
 MINUTES ?= 10
 
-.PHONY: all deps configure build render test bench sanitize fuzz test-grader test-hostile references handout proofs clean
+.PHONY: all deps configure build render test bench sanitize fuzz test-grader test-report test-hostile references handout proofs clean
 
 all: build
 
@@ -65,6 +66,11 @@ ifneq ($(wildcard solution/01_ray_casting.cpp),)
 test-grader: build
 	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-grader.sh
 
+# The grading report in a real browser; it also installs chromium when it can.
+test-report: DEPS_ARGS = --browser
+test-report: build
+	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-report-browser.sh
+
 test-hostile: build
 	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-hostile.sh
 
@@ -88,7 +94,7 @@ proofs:
 	@bash scripts/prove-tests.sh
 else
 # The student handout has no reference solution: these are the instructor's.
-test-grader test-hostile fuzz references handout proofs:
+test-grader test-report test-hostile fuzz references handout proofs:
 	@echo "make $@ is for instructors: it needs the instructor's tree (solution/, tests/hidden/)"; exit 2
 endif
 

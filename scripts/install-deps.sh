@@ -7,8 +7,9 @@
 # Embree 3). Those are optional: when they cannot be installed, it says so and
 # succeeds, and the benchmark skips the comparisons. With --sandbox it also
 # installs bubblewrap, the grader's optional sandbox; --fuzz, clang for the
-# fuzzing build; --ci, python3 (the grader checks read results.json with it)
-# and bubblewrap, for CI on a bare machine.
+# fuzzing build; --browser, chromium, which `make test-report` opens the
+# grading report in; --ci, python3 (the grader checks read results.json with
+# it), bubblewrap and chromium, for CI on a bare machine.
 set -euo pipefail
 
 packages=(g++ make cmake pkg-config libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev)
@@ -18,12 +19,13 @@ case "${1:-}" in
     --bench) optional=(povray libembree-dev) ;;
     --sandbox) optional=(bubblewrap) ;;
     --fuzz) optional=(clang libclang-rt-14-dev) ;;
-    --ci) packages+=(python3) optional=(bubblewrap) ;;
-    *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz|--ci]" >&2; exit 2 ;;
+    --browser) optional=(chromium) ;;
+    --ci) packages+=(python3) optional=(bubblewrap chromium) ;;
+    *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz|--browser|--ci]" >&2; exit 2 ;;
 esac
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
-    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json)${optional[*]:+; for make bench: ${optional[*]}}" >&2
+    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json)${optional[*]:+; optional: ${optional[*]}}" >&2
     exit 0
 fi
 
@@ -41,7 +43,7 @@ done
 # Only optional packages missing: a failure to install them is a warning.
 optional_only() {
     [ $required_missing -eq 0 ] || exit 1
-    echo "install-deps: the optional ${missing[*]} could not be installed (make bench skips the comparisons, the grader the sandbox); to add them: sudo apt-get install -y ${missing[*]}" >&2
+    echo "install-deps: the optional ${missing[*]} could not be installed (make bench skips the comparisons, the grader the sandbox; make test-report needs chromium); to add them: sudo apt-get install -y ${missing[*]}" >&2
     exit 0
 }
 
