@@ -1,5 +1,6 @@
 #include "whitted/image_pictures.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -42,10 +43,17 @@ Image with_broken_pixels_marked(const Image& image) {
 }
 
 Image difference_picture(const Image& a, const Image& b) {
+    // From the 8-bit values the files hold, so that images that match exactly give black.
     Image diff(a.width, a.height);
     for (std::size_t i = 0; i < diff.pixels.size(); ++i) {
-        const Color d = glm::abs(a.pixels[i] - b.pixels[i]) * 16.0;
-        diff.pixels[i] = is_finite(d) ? d : kMagenta;
+        if (!is_finite(a.pixels[i]) || !is_finite(b.pixels[i])) {
+            diff.pixels[i] = kMagenta;
+            continue;
+        }
+        for (int c = 0; c < 3; ++c) {
+            const int steps = std::abs(int(to_byte(a.pixels[i][c], Encoding::linear)) - int(to_byte(b.pixels[i][c], Encoding::linear)));
+            diff.pixels[i][c] = std::min(1.0, steps * 16.0 / 255.0);
+        }
     }
     return diff;
 }

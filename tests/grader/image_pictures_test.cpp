@@ -42,3 +42,17 @@ TEST(ImagePictures, GateNumbersRoundTripThroughTheGrader) {
     ASSERT_TRUE(numbers->psnr.has_value());
     EXPECT_NEAR(*numbers->psnr, difference.psnr, 1e-6);
 }
+
+TEST(ImagePictures, DifferencePictureComparesTheValuesTheFilesHold) {
+    // 0.5 and 0.5 + 0.1/255 are both written as 128: no difference. Three steps
+    // apart, the picture shows 3 x 16 = 48 steps.
+    const Image reference(3, 1, Color(0.5));
+    Image test = reference;
+    test.at(0, 0) = Color(0.5 + 0.1 / 255.0);
+    test.at(1, 0) = Color(0.5, 0.5 + 3.0 / 255.0, 0.5);
+    test.at(2, 0) = Color(std::numeric_limits<double>::infinity());
+    const Image diff = difference_picture(test, reference);
+    EXPECT_EQ(diff.at(0, 0), Color(0.0));
+    EXPECT_EQ(diff.at(1, 0), Color(0.0, 48.0 / 255.0, 0.0));
+    EXPECT_EQ(diff.at(2, 0), Color(1.0, 0.0, 1.0));
+}

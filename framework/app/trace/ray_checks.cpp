@@ -74,14 +74,17 @@ bool blocked_by_own_surface(const RayTree& tree, int index, const TraceContext& 
     if (node.kind != RayKind::shadow || !node.blocked || !node.hit || node.parent < 0) return false;
     const RayNode& parent = tree.nodes[node.parent];
     if (!parent.hit || parent.hit->primitive != node.hit->primitive) return false;
-    // A feeler only goes towards a light in front of the surface, and a convex
-    // shape cannot stand between its own point and such a light: meeting the
-    // same shape again is the rounding error of lab 2. Open cones and spheres
-    // turned inside out are not convex from their front side, but there too a
-    // hit just after the start (a tiny t) is the rounding error.
+    // A feeler only goes towards a light in front of the surface. Seen from
+    // outside, a sphere or box cannot stand between its own point and such a
+    // light, and a flat shape never can: meeting the same shape again is the
+    // rounding error of lab 2. From inside a sphere or box, or on a cone, the
+    // shape may really be in the way; there only a hit just after the start
+    // (a tiny t) is the rounding error.
     const Shape& shape = context.scene.primitives()[node.hit->primitive].shape;
     const Sphere* sphere = std::get_if<Sphere>(&shape);
-    const bool convex = !std::holds_alternative<Cone>(shape) && !(sphere && sphere->inward);
+    const bool flat = std::holds_alternative<Plane>(shape) || std::holds_alternative<Triangle>(shape);
+    const bool from_outside = parent.hit->front_face != (sphere && sphere->inward);
+    const bool convex = flat || ((sphere || std::holds_alternative<Box>(shape)) && from_outside);
     return convex || node.hit->t < 1e-6 * (1.0 + max_abs_component(node.ray.origin));
 }
 

@@ -7,7 +7,7 @@ namespace {
 using nlohmann::json;
 
 // Numbers that are not finite become null, as JSON has no NaN.
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+json number(double value) { return std::isfinite(value) ? json(value + 0.0) : json(nullptr); }
 json vec(const Vec3& v) { return json::array({number(v.x), number(v.y), number(v.z)}); }
 
 const char* kind_name(RayKind kind) {

@@ -9,13 +9,14 @@ namespace {
 
 std::string number(double value) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.4g", value);
+    std::snprintf(text, sizeof text, "%.4g", value + 0.0);
     return text;
 }
 
 std::string vec(const Vec3& v) {
     char text[96];
-    std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", v.x, v.y, v.z);
+    // + 0.0 turns -0 into 0: "-0" would only puzzle.
+    std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", v.x + 0.0, v.y + 0.0, v.z + 0.0);
     return text;
 }
 

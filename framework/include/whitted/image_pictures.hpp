@@ -11,7 +11,7 @@ namespace whitted {
 /// A copy of the image with NaN and infinite pixels shown as magenta.
 Image with_broken_pixels_marked(const Image& image);
 
-/// |a - b| per channel, 16 times brighter; NaN or infinite differences are magenta.
+/// |a - b| per channel in 8-bit steps (linear encoding), 16 times brighter; NaN or infinite pixels are magenta.
 Image difference_picture(const Image& a, const Image& b);
 
 /// Each pixel's largest channel error in 8-bit steps on a fixed colour scale:
