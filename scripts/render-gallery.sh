@@ -98,7 +98,33 @@ for entry in "${gallery[@]}"; do
         render "$build/whitted" "$scene" "$stage" "$correct"
     fi
     if [ "${extra:-}" = diff ]; then
-        "$build/whitted" diff "$correct" "$picture" -o "$out/${lab}_${name}_diff.png" > /dev/null || true
+        "$build/whitted" diff "$correct" "$picture" --amplified "$out/${lab}_${name}_diff.png" > /dev/null || true
     fi
 done
-echo "render-gallery: $(ls "$out"/*.png | wc -l) pictures in $out"
+# The debugging tools (docs/labs/debugging.md, and the walkthroughs of labs 2
+# and 5): the shadow pass with and without shadow acne; the ray tree of one
+# pixel of the lab 5 test picture with eta upside down and with the reference
+# (their text goes to $build/gallery-text, to paste into the handouts); every
+# pass of the reference on the classic scene.
+text="$build/gallery-text"
+mkdir -p "$text"
+acne="$build/mistakes/whitted-mistake-02_shadows-no_offset"
+bent="$build/mistakes/whitted-mistake-05_refraction-eta_upside_down"
+"$build/whitted" render scenes/02_shadows.p3f --stage 2 --pass shadow --quiet -o "$out/02_shadows_shadow_pass.png"
+"$acne" render scenes/02_shadows.p3f --stage 2 --pass shadow --quiet -o "$out/02_shadows_no_offset_shadow_pass.png"
+"$build/whitted" diff "$out/02_shadows_shadow_pass.png" "$out/02_shadows_no_offset_shadow_pass.png" > "$text/02_acne_diff.txt" || true
+acne_pixel=$(sed -n 's/.*at pixel (\([0-9]*\), \([0-9]*\)).*/\1 \2/p' "$text/02_acne_diff.txt")
+# shellcheck disable=SC2086 # two numbers
+"$acne" trace scenes/02_shadows.p3f --stage 2 --pixel $acne_pixel > "$text/02_acne_trace.txt"
+test_size=(--stage 5 --width 160 --height 120)
+"$bent" render scenes/05_refraction.p3f "${test_size[@]}" --quiet -o "$text/05_mine.png"
+"$build/whitted" diff tests/labs/05_refraction/05_refraction.png "$text/05_mine.png" -o "$out/05_refraction_eta_upside_down_heat.png" > "$text/05_diff.txt" || true
+bent_pixel=$(sed -n 's/.*at pixel (\([0-9]*\), \([0-9]*\)).*/\1 \2/p' "$text/05_diff.txt")
+# shellcheck disable=SC2086
+"$bent" trace scenes/05_refraction.p3f "${test_size[@]}" --pixel $bent_pixel > "$text/05_worst_trace.txt"
+"$bent" trace scenes/05_refraction.p3f "${test_size[@]}" --pixel 55 70 --picture "$out/05_refraction_eta_upside_down_trace.png" > "$text/05_bent_trace.txt"
+"$build/whitted" trace scenes/05_refraction.p3f "${test_size[@]}" --pixel 55 70 --picture "$out/05_refraction_trace.png" > "$text/05_reference_trace.txt"
+for pass in normal depth albedo shadow reflectance fresnel ray-depth object-id cost; do
+    "$build/whitted" render scenes/whitted_1980.p3f --pass "$pass" --width 256 --height 192 --quiet -o "$out/pass_$pass.png"
+done
+echo "render-gallery: $(ls "$out"/*.png | wc -l) pictures in $out; the tools' text in $text"

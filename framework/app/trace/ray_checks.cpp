@@ -50,6 +50,7 @@ std::optional<DirectionCheck> check_direction(const RayTree& tree, int index, co
         check.law = "mirror law";
         check.theta_out = degrees_between(node.ray.direction, n);
         check.expected = 2.0 * cos_theta_i * n - wo;
+        check.theta_expected = degrees_between(*check.expected, n);
     } else {
         // Snell's law, sin(theta_t) = eta_i / eta_t sin(theta_i), in vector form.
         const Material& material = context.scene.material(hit);
@@ -61,6 +62,7 @@ std::optional<DirectionCheck> check_direction(const RayTree& tree, int index, co
         const double sin2_theta_t = eta * eta * std::max(0.0, 1.0 - cos_theta_i * cos_theta_i);
         if (sin2_theta_t <= 1.0)
             check.expected = glm::normalize(eta * (cos_theta_i * n - wo) - std::sqrt(1.0 - sin2_theta_t) * n);
+        if (check.expected) check.theta_expected = degrees_between(*check.expected, -n);
     }
     if (check.expected) {
         check.off_degrees = degrees_between(node.ray.direction, *check.expected);

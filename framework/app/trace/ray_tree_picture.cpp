@@ -100,14 +100,16 @@ struct Panel {
     }
 };
 
-// The points the tree reaches: origins, hits and blockers.
+// The points where the tree's story happens: the hits, and the origins of the
+// secondary rays (the eye, usually far away, only makes the picture small).
 std::vector<Point3> tree_points(const RayTree& tree) {
     std::vector<Point3> points;
     for (const RayNode& node : tree.nodes) {
         if (node.fate != RayFate::traced) continue;
-        points.push_back(node.ray.origin);
+        if (node.kind != RayKind::eye) points.push_back(node.ray.origin);
         if (node.hit) points.push_back(node.hit->point);
     }
+    if (points.empty()) points.push_back(tree.nodes.front().ray.origin); // the eye ray saw the background
     return points;
 }
 
@@ -147,13 +149,16 @@ Image ray_tree_picture(const RayTree& tree, const TraceContext& context, const I
         if (!is_finite(c)) c = kMarkColor;
 
     const double miss_length = std::max(2.0 * tree_size(tree), context.scene.camera().df);
-    Panel eye{canvas, 0, context.scene.camera()};
+    const Camera eye_camera = context.scene.camera().with_resolution(eye_view.width, eye_view.height);
+    Panel eye{canvas, 0, eye_camera};
     eye.draw_tree(tree, miss_length);
-    // A ring around the traced pixel.
-    for (int a = 0; a < 64; ++a) {
-        const double angle = 2.0 * kPi * a / 64.0;
-        eye.plot(static_cast<int>(std::lround(context.x + 7.0 * std::cos(angle))),
-                 static_cast<int>(std::lround(context.y + 7.0 * std::sin(angle))), kMarkColor);
+    // A ring around the traced pixel (the panels may be larger than the image traced).
+    const double scale = static_cast<double>(eye_view.width) / context.width;
+    const double cx = (context.x + 0.5) * scale, cy = (context.y + 0.5) * scale;
+    for (int a = 0; a < 96; ++a) {
+        const double angle = 2.0 * kPi * a / 96.0;
+        eye.plot(static_cast<int>(std::floor(cx + 9.0 * std::cos(angle))),
+                 static_cast<int>(std::floor(cy + 9.0 * std::sin(angle))), kMarkColor);
     }
     Panel side{canvas, eye_view.width + gap, side_camera};
     side.draw_tree(tree, miss_length);

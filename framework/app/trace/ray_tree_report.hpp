@@ -38,6 +38,7 @@ struct DirectionCheck {
     double theta_i = 0.0;            // degrees between wo and the normal at the parent's hit
     double theta_out = 0.0;          // degrees between the traced ray and the normal (its side)
     std::optional<Vec3> expected;    // the direction the law gives; none: total internal reflection
+    double theta_expected = 0.0;     // degrees between the expected direction and the normal (its side)
     double off_degrees = 0.0;        // angle between the traced and the expected direction
     bool agrees = false;             // within 0.01 degrees
 };
@@ -54,8 +55,9 @@ std::string ray_tree_text(const RayTree& tree, const TraceContext& context);
 /// The tree as nested JSON objects (one per ray, children inside).
 nlohmann::json ray_tree_json(const RayTree& tree, const TraceContext& context);
 
-/// Two panels: `eye_view` (the render) with the pixel marked and the rays
-/// drawn over it, and `side_view`, rendered by `side_camera`, with the same rays.
+/// Two panels: `eye_view` (the scene's view, possibly rendered larger than the
+/// image traced) with the pixel ringed and the rays drawn over it, and
+/// `side_view`, rendered by `side_camera`, with the same rays.
 Image ray_tree_picture(const RayTree& tree, const TraceContext& context, const Image& eye_view, const Image& side_view,
                        const Camera& side_camera);
 

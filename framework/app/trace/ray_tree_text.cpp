@@ -69,10 +69,28 @@ struct TextWriter {
         return text;
     }
 
+    // Where a secondary ray starts: spawn_ray() should move it a tiny distance off the hit point.
+    std::string origin(const RayNode& node) const {
+        std::string text = "from " + vec(node.ray.origin);
+        if (node.parent >= 0 && tree.nodes[node.parent].hit) {
+            const Hit& hit = *tree.nodes[node.parent].hit;
+            const double moved = glm::length(node.ray.origin - hit.point);
+            text += moved == 0.0 ? " (exactly the hit point: not moved off the surface)"
+                                 : " (" + number(moved) + " off the hit point, " +
+                                       (glm::dot(node.ray.origin - hit.point, hit.geometric_normal) >= 0.0
+                                            ? "on the incoming ray's side)"
+                                            : "on the other side of the surface)");
+        }
+        return text;
+    }
+
     void details(int index, const std::string& prefix) {
         const RayNode& node = tree.nodes[index];
-        if (node.kind == RayKind::shadow) return;
-        std::string ray = "from " + vec(node.ray.origin) + " along " + vec(node.ray.direction);
+        if (node.kind == RayKind::shadow) {
+            line(prefix, origin(node) + " along " + vec(node.ray.direction));
+            return;
+        }
+        std::string ray = origin(node) + " along " + vec(node.ray.direction);
         const double length = glm::length(node.ray.direction);
         if (!(std::abs(length - 1.0) < 1e-6)) ray += "  <- the direction's length is " + number(length) + ", not 1";
         line(prefix, ray);
@@ -95,8 +113,8 @@ struct TextWriter {
             else if (check->agrees)
                 text += ": ok";
             else
-                text += " it gives " + vec(*check->expected) + ", " + number(check->off_degrees) +
-                        " deg from the traced direction  <- DIFFERS";
+                text += " it gives " + vec(*check->expected) + ", out at " + number(check->theta_expected) +
+                        " deg, " + number(check->off_degrees) + " deg from the traced direction  <- DIFFERS";
             line(prefix, text);
         }
         if (!node.hit) {
@@ -129,10 +147,14 @@ struct TextWriter {
         const double eta = node.hit->front_face ? 1.0 / material.ior : material.ior;
         const double cos_theta_i = glm::dot(-node.ray.direction, node.hit->normal);
         const double sin_theta_t = eta * std::sqrt(std::max(0.0, 1.0 - cos_theta_i * cos_theta_i));
-        line(prefix, "no refracted ray: " +
-                         (sin_theta_t > 1.0 ? std::string("Snell's law gives total internal reflection here: ok")
-                                            : "Snell's law gives sin(theta_t) = " + number(sin_theta_t) +
-                                                  " < 1, so a refracted ray was expected  <- DIFFERS"));
+        const std::string indices = " with eta_i " + number(node.hit->front_face ? 1.0 : material.ior) +
+                                    " and eta_t " + number(node.hit->front_face ? material.ior : 1.0);
+        if (sin_theta_t > 1.0)
+            line(prefix, "no refracted ray: Snell's law" + indices + " gives total internal reflection here: ok");
+        else
+            line(prefix, "no refracted ray, but Snell's law" + indices + " gives sin(theta_t) = " +
+                             number(sin_theta_t) + " < 1 (out at " + number(std::asin(sin_theta_t) * 180.0 / kPi) +
+                             " deg): a refracted ray was expected  <- DIFFERS");
     }
 
     void node(int index, const std::string& head, const std::string& rest) {

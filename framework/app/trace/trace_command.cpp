@@ -8,6 +8,7 @@
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -79,8 +80,12 @@ int run_trace(const TraceOptions& options) {
         }
     }
     if (side_data) {
-        const Image eye_view = render(scene, settings, options.threads).image;
-        side_data->camera = side_camera_for(tree, scene.camera(), width, height);
+        // Small images are drawn larger, so that rays and the ring around the pixel can be seen.
+        const int scale = std::clamp(480 / width, 1, 8);
+        SceneData eye_data = *side_data;
+        eye_data.camera = eye_data.camera.with_resolution(width * scale, height * scale);
+        const Image eye_view = render(Scene(std::move(eye_data), linked_leaf_kernels()), settings, options.threads).image;
+        side_data->camera = side_camera_for(tree, scene.camera(), width * scale, height * scale);
         const Scene side_scene(std::move(*side_data), linked_leaf_kernels());
         const Image side_view = render(side_scene, settings, options.threads).image;
         write_image(ray_tree_picture(tree, context, eye_view, side_view, side_scene.camera()), options.picture);
