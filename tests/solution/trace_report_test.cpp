@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 using namespace whitted;
 using namespace whitted::testing_helpers;
 
@@ -155,4 +157,28 @@ TEST(TraceReport, JsonNestsEveryRayOnce) {
     EXPECT_EQ(rays, t.tree.nodes.size());
     EXPECT_EQ(json["ray"]["kind"], "eye");
     EXPECT_GT(t.tree.nodes.size(), 3u);
+}
+
+TEST(TraceReport, RaysWithNaNFromBuggyCodeAreReportedAndNotDrawn) {
+    // Code with a bug can hand the tracer NaN directions and hit points: the
+    // text says nan, the JSON null, and the picture has no NaN pixel.
+    Traced t;
+    t.trace(Ray{Point3(0.8, 5.0, 0.0), Vec3(0.0, -1.0, 0.0)});
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    RayNode bad = t.tree.nodes[0];
+    bad.kind = RayKind::refracted;
+    bad.parent = 0;
+    bad.depth = 2;
+    bad.children.clear();
+    bad.ray.direction = Vec3(nan);
+    bad.hit->point = Vec3(nan);
+    t.tree.nodes[0].children.push_back(static_cast<int>(t.tree.nodes.size()));
+    t.tree.nodes.push_back(bad);
+    EXPECT_NE(ray_tree_text(t.tree, t.context).find("nan"), std::string::npos);
+    EXPECT_TRUE(ray_tree_json(t.tree, t.context).dump().find("null") != std::string::npos);
+    const Image view(32, 32, Color(0.5));
+    const Camera side = side_camera_for(t.tree, t.scene.camera(), 32, 32);
+    EXPECT_TRUE(is_finite(side.eye));
+    const Image picture = ray_tree_picture(t.tree, t.context, view, view, side);
+    EXPECT_EQ(count_non_finite(picture), 0u);
 }

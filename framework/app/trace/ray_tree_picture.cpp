@@ -36,6 +36,7 @@ struct Panel {
 
     // Draws the part of segment ab in front of the camera; dashed lines skip every other 4 pixels.
     void segment(Point3 a, Point3 b, const Color& color, bool dashed = false) {
+        if (!is_finite(a) || !is_finite(b)) return; // a NaN ray from buggy code: nothing to draw
         const double near = 1e-3 * camera.df;
         const double fa = -glm::dot(a - camera.eye, camera.ze), fb = -glm::dot(b - camera.eye, camera.ze);
         if (fa < near && fb < near) return;
@@ -45,6 +46,7 @@ struct Panel {
     }
 
     void line(Vec2 a, Vec2 b, const Color& color, bool dashed) {
+        if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) return;
         // Clip to the panel first (Liang-Barsky), so far-away ends cost nothing.
         double t0 = 0.0, t1 = 1.0;
         const Vec2 d = b - a;
@@ -73,6 +75,7 @@ struct Panel {
     }
 
     void dot(const Point3& p, const Color& color) {
+        if (!is_finite(p)) return;
         if (-glm::dot(p - camera.eye, camera.ze) < 1e-3 * camera.df) return;
         const Vec2 q = to_image(p);
         if (!(std::abs(q.x) < 1e6 && std::abs(q.y) < 1e6)) return;
@@ -106,15 +109,16 @@ std::vector<Point3> tree_points(const RayTree& tree) {
     std::vector<Point3> points;
     for (const RayNode& node : tree.nodes) {
         if (node.fate != RayFate::traced) continue;
-        if (node.kind != RayKind::eye) points.push_back(node.ray.origin);
-        if (node.hit) points.push_back(node.hit->point);
+        if (node.kind != RayKind::eye && is_finite(node.ray.origin)) points.push_back(node.ray.origin);
+        if (node.hit && is_finite(node.hit->point)) points.push_back(node.hit->point);
     }
-    if (points.empty()) points.push_back(tree.nodes.front().ray.origin); // the eye ray saw the background
-    return points;
+    return points; // empty when the eye ray saw the background
+
 }
 
 double tree_size(const RayTree& tree) {
     const std::vector<Point3> points = tree_points(tree);
+    if (points.empty()) return 0.0;
     double size = 0.0;
     for (const Point3& p : points) size = std::max(size, glm::length(p - points.front()));
     return size;
@@ -123,7 +127,8 @@ double tree_size(const RayTree& tree) {
 } // namespace
 
 Camera side_camera_for(const RayTree& tree, const Camera& eye_camera, int width, int height) {
-    const std::vector<Point3> points = tree_points(tree);
+    std::vector<Point3> points = tree_points(tree);
+    if (points.empty()) points.push_back(eye_camera.at);
     Point3 low = points.front(), high = points.front();
     for (const Point3& p : points) low = glm::min(low, p), high = glm::max(high, p);
     const Point3 centre = 0.5 * (low + high);
