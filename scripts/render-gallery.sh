@@ -124,6 +124,19 @@ bent_pixel=$(sed -n 's/.*at pixel (\([0-9]*\), \([0-9]*\)).*/\1 \2/p' "$text/05_
 "$bent" trace scenes/05_refraction.p3f "${test_size[@]}" --pixel $bent_pixel > "$text/05_worst_trace.txt"
 "$bent" trace scenes/05_refraction.p3f "${test_size[@]}" --pixel 55 70 --picture "$out/05_refraction_eta_upside_down_trace.png" > "$text/05_bent_trace.txt"
 "$build/whitted" trace scenes/05_refraction.p3f "${test_size[@]}" --pixel 55 70 --picture "$out/05_refraction_trace.png" > "$text/05_reference_trace.txt"
+# Passes that show a catalogued mistake: lab, mistake, scene, stage, pass; with
+# the reference's pass of that scene beside it.
+pass_gallery=(
+    "04_reflection weight_one        04_reflection 4 reflectance"
+    "06_fresnel    weights_swapped   06_fresnel    6 reflectance"
+    "06_fresnel    sum_not_halved    06_fresnel    6 fresnel"
+    "06_fresnel    snell_upside_down 06_fresnel    6 fresnel"
+)
+for entry in "${pass_gallery[@]}"; do
+    read -r lab name scene stage pass <<< "$entry"
+    "$build/mistakes/whitted-mistake-$lab-$name" render "scenes/$scene.p3f" --stage "$stage" --pass "$pass" "${size[@]}" --quiet -o "$out/${lab}_${name}_${pass}_pass.png"
+    "$build/whitted" render "scenes/$scene.p3f" --stage "$stage" --pass "$pass" "${size[@]}" --quiet -o "$out/${scene}_${pass}_pass.png"
+done
 for pass in normal depth albedo shadow reflectance fresnel ray-depth object-id cost; do
     "$build/whitted" render scenes/whitted_1980.p3f --pass "$pass" --width 256 --height 192 --quiet -o "$out/pass_$pass.png"
 done
