@@ -117,7 +117,7 @@ TEST(TraceChecks, SnellsLawSaysWhenNoRefractedRayShouldExist) {
     ASSERT_TRUE(check.has_value());
     EXPECT_FALSE(check->expected.has_value());
     EXPECT_FALSE(check->agrees);
-    EXPECT_NE(ray_tree_text(tree, t.context).find("total internal reflection: no refracted ray should be traced"),
+    EXPECT_NE(ray_tree_text(tree, t.context).find("so total internal reflection: no refracted ray should exist"),
               std::string::npos);
     tree.nodes.pop_back();
     tree.nodes[0].children.clear();

@@ -13,6 +13,7 @@ const Color kRefractedColor(0.2, 1.0, 0.2);
 const Color kLitFeelerColor(1.0, 0.9, 0.0);
 const Color kBlockedFeelerColor(1.0, 0.1, 0.1);
 const Color kMarkColor(1.0, 0.0, 1.0);
+const Color kSideBackground(0.05, 0.05, 0.12);
 
 // One picture inside the big one, seen through its camera.
 struct Panel {
@@ -83,6 +84,17 @@ struct Panel {
             for (int dx = -1; dx <= 1; ++dx) plot(static_cast<int>(std::floor(q.x)) + dx, static_cast<int>(std::floor(q.y)) + dy, color);
     }
 
+    void cross(const Point3& p, const Color& color) {
+        if (!is_finite(p) || -glm::dot(p - camera.eye, camera.ze) < 1e-3 * camera.df) return;
+        const Vec2 q = to_image(p);
+        if (!(std::abs(q.x) < 1e6 && std::abs(q.y) < 1e6)) return;
+        for (int d = -4; d <= 4; ++d) {
+            const int x = static_cast<int>(std::floor(q.x)), y = static_cast<int>(std::floor(q.y));
+            plot(x + d, y + d, color);
+            plot(x + d, y - d, color);
+        }
+    }
+
     void draw_tree(const RayTree& tree, double miss_length) {
         for (const RayNode& node : tree.nodes) {
             if (node.fate != RayFate::traced) continue;
@@ -90,7 +102,7 @@ struct Panel {
                 const bool blocked = node.blocked && node.hit;
                 const Point3 end = blocked ? node.hit->point : node.ray.at(node.light_distance);
                 segment(node.ray.origin, end, blocked ? kBlockedFeelerColor : kLitFeelerColor, !blocked);
-                if (blocked) dot(end, kBlockedFeelerColor);
+                if (blocked) cross(end, kBlockedFeelerColor); // visible even when the feeler is 1e-16 long
                 continue;
             }
             const Color& color = node.kind == RayKind::eye       ? kEyeColor
@@ -140,16 +152,22 @@ Camera side_camera_for(const RayTree& tree, const Camera& eye_camera, int width,
     return Camera::create(centre + eye_camera.xe * distance, centre, eye_camera.ye, fovy, width, height);
 }
 
-Image ray_tree_picture(const RayTree& tree, const TraceContext& context, const Image& eye_view, const Image& side_view,
-                       const Camera& side_camera) {
+Image ray_tree_picture(const RayTree& tree, const TraceContext& context, const Image& eye_view,
+                       const Image& side_normals, const Camera& side_camera) {
     const int gap = 4;
-    Image canvas(eye_view.width + gap + side_view.width, std::max(eye_view.height, side_view.height), Color(1.0));
-    // The renders, dimmed so that the rays stand out.
+    Image canvas(eye_view.width + gap + side_normals.width, std::max(eye_view.height, side_normals.height), Color(1.0));
+    // The render, dimmed so that the rays stand out.
     for (int y = 0; y < eye_view.height; ++y)
         for (int x = 0; x < eye_view.width; ++x) canvas.at(x, y) = 0.55 * glm::clamp(eye_view.at(x, y), 0.0, 1.0);
-    for (int y = 0; y < side_view.height; ++y)
-        for (int x = 0; x < side_view.width; ++x)
-            canvas.at(eye_view.width + gap + x, y) = 0.55 * glm::clamp(side_view.at(x, y), 0.0, 1.0);
+    // The side view: plain grey shapes, lighter where they face the viewer, so
+    // that glass, mirrors or a wrong material cannot hide them.
+    for (int y = 0; y < side_normals.height; ++y) {
+        for (int x = 0; x < side_normals.width; ++x) {
+            const Color& c = side_normals.at(x, y);
+            const double facing = std::abs(glm::dot(2.0 * c - 1.0, side_camera.ze));
+            canvas.at(eye_view.width + gap + x, y) = c == Color(0.0) ? kSideBackground : Color(0.15 + 0.4 * facing);
+        }
+    }
     for (Color& c : canvas.pixels)
         if (!is_finite(c)) c = kMarkColor;
 

@@ -56,10 +56,11 @@ std::string ray_tree_text(const RayTree& tree, const TraceContext& context);
 nlohmann::json ray_tree_json(const RayTree& tree, const TraceContext& context);
 
 /// Two panels: `eye_view` (the scene's view, possibly rendered larger than the
-/// image traced) with the pixel ringed and the rays drawn over it, and
-/// `side_view`, rendered by `side_camera`, with the same rays.
-Image ray_tree_picture(const RayTree& tree, const TraceContext& context, const Image& eye_view, const Image& side_view,
-                       const Camera& side_camera);
+/// image traced) with the pixel ringed and the rays drawn over it, and the
+/// shapes seen by `side_camera` (its normal pass, `side_normals`, drawn as
+/// grey) with the same rays.
+Image ray_tree_picture(const RayTree& tree, const TraceContext& context, const Image& eye_view,
+                       const Image& side_normals, const Camera& side_camera);
 
 /// A camera looking at the whole tree from the side (from the eye camera's right).
 Camera side_camera_for(const RayTree& tree, const Camera& eye_camera, int width, int height);

@@ -5,6 +5,7 @@
 #include "trace/ray_tree_report.hpp"
 #include "whitted/image_pictures.hpp"
 #include "whitted/leaf_kernels.hpp"
+#include "whitted/passes.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
@@ -87,12 +88,13 @@ int run_trace(const TraceOptions& options) {
         const Image eye_view = render(Scene(std::move(eye_data), linked_leaf_kernels()), settings, options.threads).image;
         side_data->camera = side_camera_for(tree, scene.camera(), width * scale, height * scale);
         const Scene side_scene(std::move(*side_data), linked_leaf_kernels());
-        const Image side_view = render(side_scene, settings, options.threads).image;
+        const Image side_view = render_pass(side_scene, settings, Pass::normal, options.threads).render.image;
         write_image(ray_tree_picture(tree, context, eye_view, side_view, side_scene.camera()), options.picture);
         if (options.json != "-")
-            std::printf("\nwrote %s: left, the scene with the pixel ringed in magenta; right, the same rays seen from "
-                        "the side. White: eye ray, cyan: reflected, green: refracted, dashed yellow: shadow feeler "
-                        "that reaches its light, red: blocked feeler.\n",
+            std::printf("\nwrote %s: left, your render (dimmed) with the pixel ringed in magenta; right, the same rays "
+                        "seen from the side, the shapes in grey. White: eye ray, cyan: reflected, green: refracted, "
+                        "dashed yellow: shadow feeler that reaches its light, red: blocked feeler (a red x where it "
+                        "is blocked).\n",
                         options.picture.c_str());
     }
     return 0;
