@@ -25,32 +25,45 @@ void RayStats::count(RayKind kind) {
 }
 
 Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
+    if (tree_) [[unlikely]]
+        return trace_recorded(ray, depth, kind, weight);
+    const Color parent_weight = path_weight_;
+    const Color path_weight = parent_weight * weight;
+    if (too_weak(kind, path_weight) || !within_budget()) return Color(0.0);
+    stats_.count(kind);
+    path_weight_ = path_weight;
+    const Color color = shade(ray, depth);
+    path_weight_ = parent_weight;
+    return weight * color;
+}
+
+// trace() writing the ray into the tree: the same steps, in the same order.
+Color Tracer::trace_recorded(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
     const Color parent_weight = path_weight_;
     const Color path_weight = parent_weight * weight;
     const int node = record_ray(ray, Interval{}, depth, kind, weight);
-    RayFate fate = RayFate::traced;
-    if (kind != RayKind::eye && glm::all(glm::lessThan(path_weight, Color(settings_.min_weight))))
-        fate = RayFate::below_min_weight;
-    else if (!within_budget())
-        fate = RayFate::over_budget;
-    if (fate != RayFate::traced) {
-        if (tree_) tree_->nodes[node].fate = fate;
+    if (too_weak(kind, path_weight)) {
+        tree_->nodes[node].fate = RayFate::below_min_weight;
+        return Color(0.0);
+    }
+    if (!within_budget()) {
+        tree_->nodes[node].fate = RayFate::over_budget;
         return Color(0.0);
     }
     stats_.count(kind);
     path_weight_ = path_weight;
     const int parent_node = std::exchange(current_node_, node);
-    const Color color = weight * shade(ray, depth);
+    const Color color = shade(ray, depth);
     current_node_ = parent_node;
     path_weight_ = parent_weight;
-    if (tree_) tree_->nodes[node].color = color;
-    return color;
+    return tree_->nodes[node].color = weight * color;
 }
 
 // The recursion of the slides: closest hit, local colour, then secondary rays.
 Color Tracer::shade(const Ray& ray, int depth) const {
     const std::optional<Hit> hit = scene_.closest_hit(ray);
-    if (tree_) tree_->nodes[current_node_].hit = hit;
+    if (tree_) [[unlikely]]
+        tree_->nodes[current_node_].hit = hit;
     if (!hit) return scene_.background();
     const Material& material = scene_.material(*hit);
     const Vec3 wo = -ray.direction;
@@ -87,8 +100,17 @@ bool Tracer::within_budget() const {
 }
 
 bool Tracer::occluded(const Ray& ray, double distance) const {
+    if (tree_) [[unlikely]]
+        return occluded_recorded(ray, distance);
+    if (!within_budget()) return true; // over budget: no more light is gathered for this pixel
+    stats_.count(RayKind::shadow);
+    return scene_.occluded(ray, Interval{0.0, distance * (1.0 - 1e-6)});
+}
+
+// occluded() writing the feeler into the tree.
+bool Tracer::occluded_recorded(const Ray& ray, double distance) const {
     const Interval t_range{0.0, distance * (1.0 - 1e-6)};
-    if (!within_budget()) { // over budget: no more light is gathered for this pixel
+    if (!within_budget()) {
         record_feeler(ray, t_range, distance, RayFate::over_budget, true);
         return true;
     }
@@ -99,7 +121,6 @@ bool Tracer::occluded(const Ray& ray, double distance) const {
 }
 
 int Tracer::record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight) const {
-    if (!tree_) return -1;
     RayNode node;
     node.kind = kind;
     node.depth = depth;
@@ -115,7 +136,6 @@ int Tracer::record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind
 }
 
 void Tracer::record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked) const {
-    if (!tree_) return;
     const int depth = current_node_ >= 0 ? tree_->nodes[current_node_].depth : 1;
     RayNode& node = tree_->nodes[record_ray(ray, t_range, depth, RayKind::shadow, Color(1.0))];
     node.fate = fate;
@@ -125,9 +145,8 @@ void Tracer::record_feeler(const Ray& ray, Interval t_range, double distance, Ra
     if (blocked && fate == RayFate::traced) node.hit = scene_.closest_hit(ray, t_range);
 }
 
-Color Tracer::noted(std::optional<Color> RayNode::*part, const Color& color) const {
-    if (tree_ && current_node_ >= 0) tree_->nodes[current_node_].*part = color;
-    return color;
+void Tracer::note(std::optional<Color> RayNode::*part, const Color& color) const {
+    if (current_node_ >= 0) tree_->nodes[current_node_].*part = color;
 }
 
 } // namespace whitted

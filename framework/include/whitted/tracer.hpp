@@ -71,11 +71,24 @@ class Tracer {
   private:
     Color shade(const Ray& ray, int depth) const;
 
-    // Ray tree recording (no-ops without a tree).
-    int record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight) const;
-    void record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked) const;
+    // Ray tree recording: only with a tree, and kept out of the way of renders without one.
+    [[gnu::cold, gnu::noinline]] int record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind,
+                                                const Color& weight) const;
+    [[gnu::cold, gnu::noinline]] void record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate,
+                                                    bool blocked) const;
+    [[gnu::cold, gnu::noinline]] void note(std::optional<Color> RayNode::*part, const Color& color) const;
+    [[gnu::noinline]] Color trace_recorded(const Ray& ray, int depth, RayKind kind, const Color& weight) const;
+    [[gnu::noinline]] bool occluded_recorded(const Ray& ray, double distance) const;
+    /// Whitted's adaptive depth control: a secondary ray too weak to change the pixel.
+    bool too_weak(RayKind kind, const Color& path_weight) const {
+        return kind != RayKind::eye && glm::all(glm::lessThan(path_weight, Color(settings_.min_weight)));
+    }
     /// Returns `color` after writing it into the ray being shaded as one of its parts.
-    Color noted(std::optional<Color> RayNode::*part, const Color& color) const;
+    Color noted(std::optional<Color> RayNode::*part, const Color& color) const {
+        if (tree_) [[unlikely]]
+            note(part, color);
+        return color;
+    }
 
     const Scene& scene_;
     const RenderSettings& settings_;
