@@ -61,4 +61,20 @@ CLI::Validator min_weight_validator() {
         "0..1");
 }
 
+CLI::Validator writable_file_validator() {
+    return CLI::Validator(
+        [](const std::string& path) -> std::string {
+            if (path == "-") return {};
+            std::error_code error;
+            if (std::filesystem::is_directory(path, error)) return "this is a folder, not a file: " + path;
+            const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+            if (!folder.empty() && !std::filesystem::is_directory(folder, error)) return "no such folder: " + folder.string();
+            const bool exists = std::filesystem::exists(path, error);
+            if (access(exists ? path.c_str() : (folder.empty() ? "." : folder.c_str()), W_OK) != 0)
+                return "cannot write (no permission): " + path;
+            return {};
+        },
+        "FILE");
+}
+
 } // namespace whitted

@@ -25,4 +25,7 @@ std::string check_output_path(const std::string& path);
 /// Accepts a number from 0 to 1 written in full (0.5abc is not 0.5).
 CLI::Validator min_weight_validator();
 
+/// Accepts a file path whose folder exists and is writable ("-" too, for the standard output).
+CLI::Validator writable_file_validator();
+
 } // namespace whitted

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 #include <vector>
 
 int main(int argc, char** argv) {
@@ -18,7 +19,12 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForHelp& help) {
         return app.exit(help);
     } catch (const CLI::ParseError& error) {
-        std::fprintf(stderr, "whitted: %s\nRun 'whitted --help' or 'whitted render --help' for the options.\n", error.what());
+        // Point at the help of the command that was given, if any.
+        std::string command = "render";
+        for (const whitted::Command& c : commands)
+            if (c.app->parsed()) command = c.app->get_name();
+        std::fprintf(stderr, "whitted: %s\nRun 'whitted --help' or 'whitted %s --help' for the options.\n", error.what(),
+                     command.c_str());
         return 2;
     }
     try {

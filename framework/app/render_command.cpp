@@ -199,7 +199,7 @@ Command add_render_command(CLI::App& app) {
             "FILE"));
     std::string pass_names;
     for (const PassInfo& info : all_passes()) pass_names += (pass_names.empty() ? "" : "|") + std::string(info.name);
-    render_command
+    CLI::Option* pass_option = render_command
         ->add_option_function<std::string>(
             "--pass", [options](const std::string& name) { options->pass = find_pass(name); },
             "Draw a diagnostic picture instead of the colour: normal, depth, albedo, shadow (is_lit), reflectance, "
@@ -212,7 +212,8 @@ Command add_render_command(CLI::App& app) {
             },
             "PASS"));
     render_command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary line");
-    render_command->add_flag("--srgb", options->srgb, "Write sRGB-encoded 8-bit values (default: linear, as in the course)");
+    render_command->add_flag("--srgb", options->srgb, "Write sRGB-encoded 8-bit values (default: linear, as in the course)")
+        ->excludes(pass_option); // a pass's values are meant to be read as they are
 
     return Command{render_command, [options] { return run_render(*options); }};
 }

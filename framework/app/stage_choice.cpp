@@ -28,6 +28,11 @@ std::optional<int> choose_stage(std::optional<int> asked, std::optional<Pass> pa
     if (pass) {
         // A pass calls the labs up to its own; secondary rays follow --stage.
         const PassInfo& info = pass_info(*pass);
+        if (asked && *asked < info.min_stage) {
+            std::fprintf(stderr, "whitted: --pass %s shows what labs 1 to %d compute, so it needs --stage %d or more\n",
+                         std::string(info.name).c_str(), info.min_stage, info.min_stage);
+            return std::nullopt;
+        }
         if (ready < info.min_stage) {
             std::fprintf(stderr, "whitted: --pass %s calls the code of labs 1 to %d, and these are not done yet:\n%s",
                          std::string(info.name).c_str(), info.min_stage, missing_labs(labs, info.min_stage).c_str());

@@ -56,11 +56,15 @@ Color id_color(std::uint32_t key) {
                  0.25 + 0.75 * (((h >> 16) & 0xff) / 255.0));
 }
 
-// One thread's tracer, recording each pixel's ray tree.
+// One thread's tracers: one records each pixel's ray tree; the other, which
+// records nothing, casts the shadow pass's feelers (recording them would grow
+// the tree while the pass still reads the eye ray's hit from it).
 struct Probe {
     RayTree tree;
     Tracer tracer;
-    Probe(const Scene& scene, const RenderSettings& settings, RayStats& stats) : tracer(scene, settings, stats, &tree) {}
+    Tracer feelers;
+    Probe(const Scene& scene, const RenderSettings& settings, RayStats& stats)
+        : tracer(scene, settings, stats, &tree), feelers(scene, settings, stats) {}
 };
 
 // At the eye ray's hit: white when every light in front of the surface reaches it, black when none does.
@@ -110,7 +114,7 @@ Color pass_pixel(Pass pass, const Scene& scene, const RenderSettings& settings, 
     default: break;
     }
     if (!eye.hit) return pass == Pass::shadow ? kShadowBackground : kBackground;
-    const Hit& hit = *eye.hit;
+    const Hit hit = *eye.hit;
     switch (pass) {
     case Pass::normal: return 0.5 * (hit.normal + 1.0);
     case Pass::depth: return Color(hit.t, 1.0, 0.0); // (distance, "hit") until finish()
@@ -118,7 +122,7 @@ Color pass_pixel(Pass pass, const Scene& scene, const RenderSettings& settings, 
         const Material& material = scene.material(hit);
         return material.diffuse * material.color_at(hit.point);
     }
-    case Pass::shadow: return shadow_pixel(probe.tracer, hit);
+    case Pass::shadow: return shadow_pixel(probe.feelers, hit);
     case Pass::fresnel: return fresnel_pixel(scene, eye);
     case Pass::object_id: {
         const Primitive& primitive = scene.primitives()[hit.primitive];
@@ -171,7 +175,8 @@ std::string finish(Pass pass, Image& image) {
                 speckles += image.at(x, y).x < 1.0 && image.at(x, y) != kNotApplicable &&
                             image.at(x, y) != kShadowBackground && image.at(x - 1, y) == lit &&
                             image.at(x + 1, y) == lit && image.at(x, y - 1) == lit && image.at(x, y + 1) == lit;
-        const double lit_from_front = std::max(1.0, none + some + all);
+        if (none + some + all == 0.0) return "no point the eye rays hit has a light in front of it";
+        const double lit_from_front = none + some + all;
         return format("of the points with a light in front: %.1f %% see every such light, %.1f %% some, %.1f %% none",
                       100.0 * all / lit_from_front, 100.0 * some / lit_from_front, 100.0 * none / lit_from_front) +
                (speckles == 0 ? "; no lone dark pixels among lit ones"

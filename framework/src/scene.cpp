@@ -106,19 +106,31 @@ QueryCost Scene::query_cost(const Ray& ray, Interval t_range, bool any_hit) cons
     const std::span<const Primitive> all = data_.primitives;
     QueryCost cost;
     std::uint64_t nodes = 0;
-    // The same order as closest_hit() and occluded(): the planes, then the BVH.
+    // Occlusion tests one shape at a time and stops at the first hit; the
+    // closest hit tests every shape of a leaf (the labs' closest_hit()), and
+    // the planes first, as closest_hit() and occluded() do.
+    const auto test_one_by_one = [&](std::span<const Primitive> shapes, Interval range) {
+        for (const Primitive& primitive : shapes) {
+            ++cost.primitive_tests;
+            if (intersect(ray, primitive, range)) return true;
+        }
+        return false;
+    };
     const std::span<const Primitive> planes = all.subspan(bounded_count_);
-    cost.primitive_tests = planes.size();
-    if (const std::optional<Hit> hit = whitted::closest_hit(ray, planes, t_range)) {
-        if (any_hit) return cost;
-        t_range.max = hit->t;
+    if (any_hit) {
+        if (test_one_by_one(planes, t_range)) return cost;
+        bvh_.traverse_counting<false>(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+            return test_one_by_one(all.subspan(first, count), Interval{t_range.min, t_max}) ? -1.0 : t_max;
+        }, nodes);
+    } else {
+        cost.primitive_tests = planes.size();
+        if (const std::optional<Hit> hit = whitted::closest_hit(ray, planes, t_range)) t_range.max = hit->t;
+        bvh_.traverse_counting(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+            cost.primitive_tests += count;
+            const std::optional<Hit> hit = whitted::closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max});
+            return hit ? hit->t : t_max;
+        }, nodes);
     }
-    bvh_.traverse_counting(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
-        cost.primitive_tests += count;
-        if (const std::optional<Hit> hit = whitted::closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max}))
-            return any_hit ? -1.0 : hit->t;
-        return t_max;
-    }, nodes);
     cost.box_tests = nodes * WideBvh::kWidth;
     return cost;
 }

@@ -94,6 +94,20 @@ TEST(Passes, ShadowIsBlackWhereABlockerHidesTheOnlyLight) {
     EXPECT_GT(white, kSize * kSize / 4);
 }
 
+TEST(Passes, ShadowIsGreyWhereOneOfTwoLightsIsHidden) {
+    // As above, plus a second light at (5, 5, 0) that the ball does not hide
+    // from the origin: one light of two reaches it, grey 0.5.
+    SceneData data;
+    data.camera = Camera::create(Point3(0.0, 6.0, 6.0), Point3(0.0), Vec3(0.0, 1.0, 0.0), 60.0, kSize, kSize);
+    data.lights = {PointLight{Point3(0.0, 5.0, 0.0), Color(1.0)}, PointLight{Point3(5.0, 5.0, 0.0), Color(1.0)}};
+    data.materials = {diffuse_material(Color(1.0))};
+    data.primitives.push_back({Plane{Point3(0.0), Vec3(0.0, 1.0, 0.0)}, 0});
+    data.primitives.push_back({Sphere{Point3(0.0, 2.5, 0.0), 0.5}, 0});
+    const PassResult result = run(data, Pass::shadow, 2);
+    EXPECT_EQ(centre(result), Color(0.5));
+    EXPECT_NE(result.summary.find("no lone dark pixels"), std::string::npos) << result.summary;
+}
+
 TEST(Passes, FresnelAtNormalIncidenceOnGlassIsFourPercent) {
     // Kr = ((1 - 1.5) / (1 + 1.5))^2 = 0.04 at normal incidence.
     const PassResult glass = run(looking_at(glass_material(1.5)), Pass::fresnel);

@@ -142,6 +142,38 @@ TEST(TraceChecks, AFeelerStoppedByItsOwnSurfaceIsCalledShadowAcne) {
     EXPECT_FALSE(blocked_by_own_surface(t.tree, feeler, t.context));
 }
 
+TEST(TraceChecks, FromInsideOrTowardsALightBehindOnlyATinyTIsShadowAcne) {
+    // Inside the glass ball (a feeler from its far wall, hit from inside) the
+    // ball itself may stand between the point and the light: blocked at t = 1.7
+    // is a real shadow, at t = 1e-17 the rounding error. The same holds for a
+    // feeler from outside towards a light behind the surface (code that casts
+    // feelers before checking n . L): the ball's far side blocks it at t = 1.8.
+    Traced t;
+    t.trace(Ray{Point3(0.8, 5.0, 0.0), Vec3(0.0, -1.0, 0.0)}, 2);
+    const int feeler = t.first(RayKind::shadow);
+    ASSERT_GE(feeler, 0);
+    RayNode& node = t.tree.nodes[feeler];
+    RayNode& eye = t.tree.nodes[0];
+    node.blocked = true;
+    node.hit = eye.hit;
+    // From inside: the eye ray's hit seen from within the ball.
+    eye.hit->front_face = false;
+    eye.hit->normal = -eye.hit->normal;
+    eye.hit->geometric_normal = -eye.hit->geometric_normal;
+    node.ray.direction = eye.hit->geometric_normal;
+    node.hit->t = 1.7;
+    EXPECT_FALSE(blocked_by_own_surface(t.tree, feeler, t.context));
+    node.hit->t = 1e-17;
+    EXPECT_TRUE(blocked_by_own_surface(t.tree, feeler, t.context));
+    // From outside, towards a light behind the surface.
+    eye.hit->front_face = true;
+    eye.hit->normal = -eye.hit->normal;
+    eye.hit->geometric_normal = -eye.hit->geometric_normal;
+    node.ray.direction = -eye.hit->geometric_normal;
+    node.hit->t = 1.8;
+    EXPECT_FALSE(blocked_by_own_surface(t.tree, feeler, t.context));
+}
+
 TEST(TraceReport, JsonNestsEveryRayOnce) {
     Traced t;
     t.settings.stage = 6;

@@ -41,7 +41,7 @@ std::optional<DirectionCheck> check_direction(const RayTree& tree, int index, co
     const RayNode& parent = tree.nodes[node.parent];
     if (!parent.hit) return std::nullopt;
     const Hit& hit = *parent.hit;
-    const Vec3 wo = -parent.ray.direction;
+    const Vec3 wo = -glm::normalize(parent.ray.direction); // the report flags a direction that is not unit length
     const Vec3& n = hit.normal;
     const double cos_theta_i = glm::dot(wo, n);
     DirectionCheck check;
@@ -86,7 +86,10 @@ bool blocked_by_own_surface(const RayTree& tree, int index, const TraceContext& 
     const Sphere* sphere = std::get_if<Sphere>(&shape);
     const bool flat = std::holds_alternative<Plane>(shape) || std::holds_alternative<Triangle>(shape);
     const bool from_outside = parent.hit->front_face != (sphere && sphere->inward);
-    const bool convex = flat || ((sphere || std::holds_alternative<Box>(shape)) && from_outside);
+    // (Only for a feeler that leaves on the outer side: code that casts feelers
+    // to lights behind the surface rightly finds the far side of the shape.)
+    const bool leaves_outwards = glm::dot(node.ray.direction, parent.hit->geometric_normal) > 0.0;
+    const bool convex = leaves_outwards && (flat || ((sphere || std::holds_alternative<Box>(shape)) && from_outside));
     return convex || node.hit->t < 1e-6 * (1.0 + max_abs_component(node.ray.origin));
 }
 

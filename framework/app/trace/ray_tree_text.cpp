@@ -53,6 +53,7 @@ struct TextWriter {
         const RayNode& node = tree.nodes[index];
         std::string text = kind_name(node.kind);
         if (node.kind == RayKind::shadow) {
+            if (context.scene.lights().empty()) return text + " (the scene has no light)";
             const int light = light_of(context.scene, node);
             text += " to light " + std::to_string(light + 1) + " at " + vec(context.scene.lights()[light].position) +
                     ", " + number(node.light_distance) + " away: ";
@@ -152,7 +153,7 @@ struct TextWriter {
         for (int child : node.children)
             if (tree.nodes[child].kind == RayKind::refracted) return;
         const double eta = node.hit->front_face ? 1.0 / material.ior : material.ior;
-        const double cos_theta_i = glm::dot(-node.ray.direction, node.hit->normal);
+        const double cos_theta_i = glm::dot(-glm::normalize(node.ray.direction), node.hit->normal);
         const double sin_theta_t = eta * std::sqrt(std::max(0.0, 1.0 - cos_theta_i * cos_theta_i));
         const std::string indices = " with eta_i " + number(node.hit->front_face ? 1.0 : material.ior) +
                                     " and eta_t " + number(node.hit->front_face ? material.ior : 1.0);

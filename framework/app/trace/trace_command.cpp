@@ -82,7 +82,7 @@ int run_trace(const TraceOptions& options) {
     }
     if (side_data) {
         // Small images are drawn larger, so that rays and the ring around the pixel can be seen.
-        const int scale = std::clamp(480 / width, 1, 8);
+        const int scale = std::clamp(480 / std::max(width, height), 1, 8);
         SceneData eye_data = *side_data;
         eye_data.camera = eye_data.camera.with_resolution(width * scale, height * scale);
         const Image eye_view = render(Scene(std::move(eye_data), linked_leaf_kernels()), settings, options.threads).image;
@@ -122,7 +122,8 @@ Command add_trace_command(CLI::App& app) {
     command->add_option("--stage", options->stage, "Use the features of labs 1..K only (default: the highest stage whose labs are done)")
         ->check(CLI::Range(1, 6));
     command->add_option("--json", options->json, "Also write the tree as JSON to FILE; - writes only the JSON, to the standard output")
-        ->type_name("FILE");
+        ->type_name("FILE")
+        ->check(writable_file_validator());
     command->add_option("--picture", options->picture, "Also draw the rays over the scene and from the side into this image (.png, .ppm or .pfm)")
         ->type_name("IMAGE")
         ->check(CLI::Validator(check_output_path, "IMAGE"));

@@ -60,9 +60,9 @@ class WideBvh {
     }
 
     /// traverse(), also adding to `nodes_tested` each node whose four boxes it tests (the `cost` pass).
-    template <class LeafFn>
+    template <bool kNearestFirst = true, class LeafFn>
     void traverse_counting(const Ray& ray, double t_min, double t_max, LeafFn&& leaf, std::uint64_t& nodes_tested) const {
-        traverse_impl<true, true>(ray, t_min, t_max, leaf, &nodes_tested);
+        traverse_impl<kNearestFirst, true>(ray, t_min, t_max, leaf, &nodes_tested);
     }
 
   private:
