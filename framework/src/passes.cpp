@@ -1,5 +1,6 @@
 #include "whitted/passes.hpp"
 
+#include "pass_pictures.hpp"
 #include "whitted/labs.hpp"
 
 #include <algorithm>
@@ -11,9 +12,10 @@
 namespace whitted {
 namespace {
 
-const Color kBackground(0.0);                 // the eye ray hit nothing
-const Color kNotApplicable(0.05, 0.05, 0.3);  // dark blue: the pass says nothing here
-const Color kShadowBackground(0.0, 0.3, 0.3); // teal: black means "in shadow" in the shadow pass
+using detail::kBackground;
+using detail::kNotApplicable;
+using detail::kShadowBackground;
+using detail::ramp;
 
 const std::array<PassInfo, 9> kPasses = {{
     {Pass::normal, "normal", 1,
@@ -36,15 +38,6 @@ const std::array<PassInfo, 9> kPasses = {{
      "intersection tests per pixel (ray-box + ray-primitive, every ray of the pixel's tree), log scale: "
      "dark blue = fewest, red = most in this image"},
 }};
-
-// A scale for counts: dark blue, light blue, green, yellow, red, from s = 0 to 1.
-Color ramp(double s) {
-    static const std::array<Color, 5> stops = {Color(0.05, 0.05, 0.45), Color(0.0, 0.55, 0.9), Color(0.0, 0.8, 0.0),
-                                               Color(1.0, 0.9, 0.0), Color(1.0, 0.0, 0.0)};
-    s = std::clamp(s, 0.0, 1.0) * (stops.size() - 1);
-    const std::size_t i = std::min(static_cast<std::size_t>(s), stops.size() - 2);
-    return stops[i] + (stops[i + 1] - stops[i]) * (s - static_cast<double>(i));
-}
 
 // A bright colour for a number, the same every time.
 Color id_color(std::uint32_t key) {
@@ -132,60 +125,6 @@ Color pass_pixel(Pass pass, const Scene& scene, const RenderSettings& settings, 
     }
 }
 
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-    char line[256];
-    std::snprintf(line, sizeof line, pattern, a, b, c);
-    return line;
-}
-
-// Turns raw numbers into colours, and says what the picture holds.
-std::string finish(Pass pass, Image& image) {
-    std::vector<Color>& pixels = image.pixels;
-    const double n = static_cast<double>(std::max<std::size_t>(1, pixels.size()));
-    if (pass == Pass::depth) {
-        double near = kInfinity, far = 0.0;
-        for (const Color& c : pixels)
-            if (c.y > 0.0) near = std::min(near, c.x), far = std::max(far, c.x);
-        for (Color& c : pixels) {
-            if (c.y == 0.0) continue;
-            const double s = far > near ? (c.x - near) / (far - near) : 0.0;
-            c = Color(1.0 - 0.85 * s);
-        }
-        return near <= far ? format("distances from %.4g (white) to %.4g (dark grey)", near, far)
-                           : "the eye rays hit nothing";
-    }
-    if (pass == Pass::cost) {
-        double most = 0.0, sum = 0.0;
-        for (const Color& c : pixels) most = std::max(most, c.x), sum += c.x;
-        for (Color& c : pixels) c = ramp(most > 0.0 ? std::log1p(c.x) / std::log1p(most) : 0.0);
-        return format("intersection tests per pixel: %.1f on average, %.0f at most", sum / n, most);
-    }
-    if (pass == Pass::shadow) {
-        double none = 0.0, some = 0.0, all = 0.0;
-        for (const Color& c : pixels) {
-            if (c == kNotApplicable || c == kShadowBackground) continue;
-            (c.x == 0.0 ? none : c.x == 1.0 ? all : some) += 1.0;
-        }
-        // A real shadow covers an area; a lone dark pixel among fully lit ones
-        // is almost always a feeler that hit its own surface.
-        int speckles = 0;
-        const Color lit(1.0);
-        for (int y = 1; y + 1 < image.height; ++y)
-            for (int x = 1; x + 1 < image.width; ++x)
-                speckles += image.at(x, y).x < 1.0 && image.at(x, y) != kNotApplicable &&
-                            image.at(x, y) != kShadowBackground && image.at(x - 1, y) == lit &&
-                            image.at(x + 1, y) == lit && image.at(x, y - 1) == lit && image.at(x, y + 1) == lit;
-        if (none + some + all == 0.0) return "no point the eye rays hit has a light in front of it";
-        const double lit_from_front = none + some + all;
-        return format("of the points with a light in front: %.1f %% see every such light, %.1f %% some, %.1f %% none",
-                      100.0 * all / lit_from_front, 100.0 * some / lit_from_front, 100.0 * none / lit_from_front) +
-               (speckles == 0 ? "; no lone dark pixels among lit ones"
-                              : "; " + std::to_string(speckles) +
-                                    " lone dark pixels among lit ones: speckles, the sign of shadow acne (lab 2)");
-    }
-    return {};
-}
-
 } // namespace
 
 std::span<const PassInfo> all_passes() { return kPasses; }
@@ -212,7 +151,7 @@ PassResult render_pass(const Scene& scene, const RenderSettings& settings, Pass 
             return pass_pixel(pass, scene, settings, *probe);
         };
     });
-    result.summary = finish(pass, result.render.image);
+    result.summary = detail::finish_pass(pass, result.render.image);
     return result;
 }
 
