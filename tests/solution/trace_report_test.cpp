@@ -174,6 +174,18 @@ TEST(TraceChecks, FromInsideOrTowardsALightBehindOnlyATinyTIsShadowAcne) {
     EXPECT_FALSE(blocked_by_own_surface(t.tree, feeler, t.context));
 }
 
+TEST(TraceChecks, ANormalThatDoesNotFaceTheRayIsCalledOut) {
+    // The reference's normals face the ray everywhere; an intersection that
+    // forgets to turn the normal for a ray from inside does not.
+    Traced t;
+    t.trace(Ray{Point3(0.8, 5.0, 0.0), Vec3(0.0, -1.0, 0.0)}, 5);
+    EXPECT_EQ(ray_tree_text(t.tree, t.context).find("the normal should face"), std::string::npos);
+    t.tree.nodes[0].hit->normal = -t.tree.nodes[0].hit->normal;
+    EXPECT_NE(ray_tree_text(t.tree, t.context).find("<- DIFFERS: the normal should face the incoming ray"), std::string::npos);
+    t.tree.nodes[0].hit->normal = -2.0 * t.tree.nodes[0].hit->normal;
+    EXPECT_NE(ray_tree_text(t.tree, t.context).find("the normal's length is 2, not 1"), std::string::npos);
+}
+
 TEST(TraceReport, JsonNestsEveryRayOnce) {
     Traced t;
     t.settings.stage = 6;

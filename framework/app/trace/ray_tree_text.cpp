@@ -129,9 +129,15 @@ struct TextWriter {
             line(prefix, "hits nothing: the background " + vec(context.scene.background()));
         } else {
             const Hit& hit = *node.hit;
-            line(prefix, "hit " + object_name(context, hit.primitive) + " at t " + number(hit.t) + ": point " +
-                             vec(hit.point) + ", normal " + vec(hit.normal) +
-                             (hit.front_face ? ", front face (from outside)" : ", back face (from inside)"));
+            std::string text = "hit " + object_name(context, hit.primitive) + " at t " + number(hit.t) + ": point " +
+                               vec(hit.point) + ", normal " + vec(hit.normal) +
+                               (hit.front_face ? ", front face (from outside)" : ", back face (from inside)");
+            // What every lab relies on (hit.hpp): a unit normal on the incoming ray's side.
+            if (glm::dot(hit.normal, node.ray.direction) > 0.0)
+                text += "  <- DIFFERS: the normal should face the incoming ray";
+            else if (!(std::abs(glm::length(hit.normal) - 1.0) < 1e-6))
+                text += "  <- DIFFERS: the normal's length is " + number(glm::length(hit.normal)) + ", not 1";
+            line(prefix, text);
         }
         std::string colour;
         if (node.local) colour += "local " + vec(*node.local);
