@@ -118,14 +118,15 @@ std::string html_report(const GradingResult& result, const std::string& problem)
         if (!lab.compile_errors.empty())
             html += "<h2>" + escape(lab.title) + " does not compile</h2><pre>" + escape(lab.compile_errors) + "</pre>\n";
 
-    html += "<h2>Tests that did not pass</h2>\n" + heat_legend();
-    std::string passed;
+    std::string failed, passed;
     for (std::size_t l = 0; l < result.labs.size(); ++l)
         for (std::size_t t = 0; t < result.labs[l].tests.size(); ++t) {
             const ScoredTest& test = result.labs[l].tests[t];
-            (test.outcome.status == Status::passed ? passed : html) +=
+            (test.outcome.status == Status::passed ? passed : failed) +=
                 test_card(result.labs[l], test, std::to_string(l + 1) + "." + std::to_string(t + 1));
         }
+    html += heat_legend() + "<h2>Tests that did not pass</h2>\n";
+    html += failed.empty() ? "<p>None: every test passed.</p>\n" : failed;
     return html + "<h2>Tests that passed</h2>\n" + passed + "</body></html>\n";
 }
 
