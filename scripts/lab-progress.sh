@@ -50,7 +50,7 @@ for group in framework integration cli; do
     mark="  "
     [ $((passed + skipped)) -eq "$total" ] && mark="ok"
     note=""
-    [ "$skipped" -gt 0 ] && note=", $skipped skipped here (ctest -L $group lists it)"
+    [ "$skipped" -gt 0 ] && note=", $skipped skipped here (see ctest -L $group)"
     printf '%s %s: %d/%d tests pass%s\n' "$mark" "$group" "$passed" "$total" "$note"
 done
 echo
