@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <tuple>
+#include <utility>
 #include <type_traits>
 #include <variant>
 
@@ -14,6 +16,12 @@ double degrees_between(const Vec3& a, const Vec3& b) {
     const double length = glm::length(a) * glm::length(b);
     if (!(length > 0.0)) return 0.0;
     return std::acos(glm::clamp(glm::dot(a, b) / length, -1.0, 1.0)) * 180.0 / kPi;
+}
+
+// The indices of refraction on the incoming side and on the far side of a hit:
+// air (1) outside, the material's inside.
+std::pair<double, double> indices_at(const Hit& hit, const Material& material) {
+    return hit.front_face ? std::pair{1.0, material.ior} : std::pair{material.ior, 1.0};
 }
 
 } // namespace
@@ -55,8 +63,7 @@ std::optional<DirectionCheck> check_direction(const RayTree& tree, int index, co
         // Snell's law, sin(theta_t) = eta_i / eta_t sin(theta_i), in vector form.
         const Material& material = context.scene.material(hit);
         check.law = "Snell's law";
-        check.eta_i = hit.front_face ? 1.0 : material.ior;
-        check.eta_t = hit.front_face ? material.ior : 1.0;
+        std::tie(check.eta_i, check.eta_t) = indices_at(hit, material);
         check.theta_out = degrees_between(node.ray.direction, -n);
         const double eta = check.eta_i / check.eta_t;
         const double sin2_theta_t = eta * eta * std::max(0.0, 1.0 - cos_theta_i * cos_theta_i);
@@ -69,6 +76,22 @@ std::optional<DirectionCheck> check_direction(const RayTree& tree, int index, co
         check.agrees = check.off_degrees < 0.01;
     }
     return check;
+}
+
+std::optional<MissingRefraction> check_missing_refraction(const RayTree& tree, int index, const TraceContext& context) {
+    const RayNode& node = tree.nodes[index];
+    const RenderSettings& settings = context.settings;
+    if (!node.hit || settings.stage < 5 || node.depth >= settings.max_depth) return std::nullopt;
+    const Material& material = context.scene.material(*node.hit);
+    if (material.transmittance <= 0.0) return std::nullopt;
+    for (int child : node.children)
+        if (tree.nodes[child].kind == RayKind::refracted) return std::nullopt;
+    MissingRefraction missing;
+    std::tie(missing.eta_i, missing.eta_t) = indices_at(*node.hit, material);
+    const double cos_theta_i = glm::dot(-glm::normalize(node.ray.direction), node.hit->normal);
+    missing.sin_theta_t =
+        missing.eta_i / missing.eta_t * std::sqrt(std::max(0.0, 1.0 - cos_theta_i * cos_theta_i));
+    return missing;
 }
 
 bool blocked_by_own_surface(const RayTree& tree, int index, const TraceContext& context) {

@@ -46,6 +46,16 @@ struct DirectionCheck {
 /// The check of node `index` when it is a reflected or refracted ray.
 std::optional<DirectionCheck> check_direction(const RayTree& tree, int index, const TraceContext& context);
 
+/// A transparent hit from which the code cast no refracted ray.
+struct MissingRefraction {
+    double eta_i = 1.0, eta_t = 1.0; // the indices on the incoming and the far side
+    double sin_theta_t = 0.0;        // what Snell's law gives; above 1: total internal reflection, as it should be
+};
+
+/// The check of node `index` when it hit a transparent surface (stage 5 on,
+/// above the maximum depth) and none of its children is a refracted ray.
+std::optional<MissingRefraction> check_missing_refraction(const RayTree& tree, int index, const TraceContext& context);
+
 /// True when a blocked shadow feeler was stopped by the very surface it starts on.
 bool blocked_by_own_surface(const RayTree& tree, int index, const TraceContext& context);
 

@@ -151,23 +151,15 @@ struct TextWriter {
 
     // A transparent surface with no refracted ray: total internal reflection, or a bug.
     void note_missing_refraction(int index, const std::string& prefix) {
-        const RayNode& node = tree.nodes[index];
-        const RenderSettings& settings = context.settings;
-        if (!node.hit || settings.stage < 5 || node.depth >= settings.max_depth) return;
-        const Material& material = context.scene.material(*node.hit);
-        if (material.transmittance <= 0.0) return;
-        for (int child : node.children)
-            if (tree.nodes[child].kind == RayKind::refracted) return;
-        const double eta = node.hit->front_face ? 1.0 / material.ior : material.ior;
-        const double cos_theta_i = glm::dot(-glm::normalize(node.ray.direction), node.hit->normal);
-        const double sin_theta_t = eta * std::sqrt(std::max(0.0, 1.0 - cos_theta_i * cos_theta_i));
-        const std::string indices = " with eta_i " + number(node.hit->front_face ? 1.0 : material.ior) +
-                                    " and eta_t " + number(node.hit->front_face ? material.ior : 1.0);
-        if (sin_theta_t > 1.0)
+        const std::optional<MissingRefraction> missing = check_missing_refraction(tree, index, context);
+        if (!missing) return;
+        const std::string indices = " with eta_i " + number(missing->eta_i) + " and eta_t " + number(missing->eta_t);
+        if (missing->sin_theta_t > 1.0)
             line(prefix, "no refracted ray: Snell's law" + indices + " gives total internal reflection here: ok");
         else
             line(prefix, "no refracted ray, but Snell's law" + indices + " gives sin(theta_t) = " +
-                             number(sin_theta_t) + " < 1 (out at " + number(std::asin(sin_theta_t) * 180.0 / kPi) +
+                             number(missing->sin_theta_t) + " < 1 (out at " +
+                             number(std::asin(missing->sin_theta_t) * 180.0 / kPi) +
                              " deg): a refracted ray was expected  <- DIFFERS");
     }
 

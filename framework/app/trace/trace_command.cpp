@@ -83,9 +83,14 @@ int run_trace(const TraceOptions& options) {
     if (side_data) {
         // Small images are drawn larger, so that rays and the ring around the pixel can be seen.
         const int scale = std::clamp(480 / std::max(width, height), 1, 8);
-        SceneData eye_data = *side_data;
-        eye_data.camera = eye_data.camera.with_resolution(width * scale, height * scale);
-        const Image eye_view = render(Scene(std::move(eye_data), linked_leaf_kernels()), settings, options.threads).image;
+        Image eye_view;
+        if (scale == 1) {
+            eye_view = render(scene, settings, options.threads).image;
+        } else {
+            SceneData eye_data = *side_data;
+            eye_data.camera = eye_data.camera.with_resolution(width * scale, height * scale);
+            eye_view = render(Scene(std::move(eye_data), linked_leaf_kernels()), settings, options.threads).image;
+        }
         side_data->camera = side_camera_for(tree, scene.camera(), width * scale, height * scale);
         const Scene side_scene(std::move(*side_data), linked_leaf_kernels());
         const Image side_view = render_pass(side_scene, settings, Pass::normal, options.threads).render.image;
