@@ -2,6 +2,7 @@
 
 #include "whitted/labs.hpp"
 
+#include <atomic>
 #include <utility>
 
 namespace whitted {
@@ -27,18 +28,31 @@ void interpolate_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& n
     hit.normal = n;
 }
 
+std::uint64_t next_serial() {
+    // Only an identity for scenes: the one counter the framework shares between threads.
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+}
+
 } // namespace
 
-Scene::Scene(SceneData data, const LeafKernels* kernels) : data_(std::move(data)), kernels_(kernels) {
+[[gnu::weak]] const RemoteSceneQueries* remote_scene_queries() { return nullptr; }
+
+Scene::Scene(SceneData data, const LeafKernels* kernels)
+    : data_(std::move(data)), kernels_(kernels), serial_(next_serial()) {
     // Bounded primitives go into the BVH, in its order; infinite planes follow.
     std::vector<Primitive> bounded, unbounded;
+    std::vector<std::uint32_t> bounded_index, unbounded_index;
     std::vector<Aabb> boxes;
-    for (Primitive& primitive : data_.primitives) {
+    for (std::size_t i = 0; i < data_.primitives.size(); ++i) {
+        Primitive& primitive = data_.primitives[i];
         if (auto box = bounds(primitive.shape)) {
             boxes.push_back(*box);
             bounded.push_back(std::move(primitive));
+            bounded_index.push_back(static_cast<std::uint32_t>(i));
         } else {
             unbounded.push_back(std::move(primitive));
+            unbounded_index.push_back(static_cast<std::uint32_t>(i));
         }
     }
     const Bvh binary(boxes);
@@ -46,9 +60,22 @@ Scene::Scene(SceneData data, const LeafKernels* kernels) : data_(std::move(data)
     bounded_count_ = bounded.size();
     data_.primitives.clear();
     data_.primitives.reserve(bounded.size() + unbounded.size());
-    for (std::uint32_t index : binary.order()) data_.primitives.push_back(std::move(bounded[index]));
-    for (Primitive& primitive : unbounded) data_.primitives.push_back(std::move(primitive));
+    source_index_.reserve(bounded.size() + unbounded.size());
+    for (std::uint32_t index : binary.order()) {
+        data_.primitives.push_back(std::move(bounded[index]));
+        source_index_.push_back(bounded_index[index]);
+    }
+    for (std::size_t i = 0; i < unbounded.size(); ++i) {
+        data_.primitives.push_back(std::move(unbounded[i]));
+        source_index_.push_back(unbounded_index[i]);
+    }
     for (std::size_t i = 0; i < data_.primitives.size(); ++i) data_.primitives[i].id = static_cast<std::uint32_t>(i);
+}
+
+SceneData Scene::source_data() const {
+    SceneData data = data_;
+    for (std::size_t i = 0; i < data_.primitives.size(); ++i) data.primitives[source_index_[i]] = data_.primitives[i];
+    return data;
 }
 
 void Scene::apply_vertex_normals(Hit& hit, const Ray& ray) const {
@@ -58,6 +85,8 @@ void Scene::apply_vertex_normals(Hit& hit, const Ray& ray) const {
 
 std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     if (kernels_) return closest_hit_with_kernels(ray, t_range);
+    if (const RemoteSceneQueries* remote = remote_scene_queries()) [[unlikely]]
+        return remote->closest_hit(*this, ray, t_range);
     const std::span<const Primitive> all = data_.primitives;
     // Infinite planes first: a plane hit shortens the range the BVH must search.
     std::optional<Hit> nearest = whitted::closest_hit(ray, all.subspan(bounded_count_), t_range);
@@ -85,6 +114,8 @@ std::optional<Hit> Scene::closest_hit_with_kernels(const Ray& ray, Interval t_ra
 
 bool Scene::occluded(const Ray& ray, Interval t_range) const {
     if (kernels_) return occluded_with_kernels(ray, t_range);
+    if (const RemoteSceneQueries* remote = remote_scene_queries()) [[unlikely]]
+        return remote->occluded(*this, ray, t_range);
     const std::span<const Primitive> all = data_.primitives;
     for (const Primitive& plane : all.subspan(bounded_count_)) {
         if (intersect(ray, plane, t_range)) return true;

@@ -40,6 +40,18 @@ struct QueryCost {
     std::uint64_t total() const { return box_tests + primitive_tests; }
 };
 
+class Scene;
+
+/// Scene queries answered by another process: a grading checker or worker
+/// whose lab 1 lives on the other side of the link (framework/link/). Only
+/// those programs link a definition of `remote_scene_queries()` other than
+/// the framework's, which returns nullptr.
+struct RemoteSceneQueries {
+    std::optional<Hit> (*closest_hit)(const Scene& scene, const Ray& ray, Interval t_range);
+    bool (*occluded)(const Scene& scene, const Ray& ray, Interval t_range);
+};
+const RemoteSceneQueries* remote_scene_queries();
+
 class Scene {
   public:
     /// Takes the data and builds the acceleration structure over its primitives.
@@ -53,6 +65,15 @@ class Scene {
     std::span<const PointLight> lights() const { return data_.lights; }
     std::span<const Primitive> primitives() const { return data_.primitives; }
     int max_depth() const { return data_.max_depth; }
+
+    /// The number of materials; a hit's material index must be below it.
+    std::size_t material_count() const { return data_.materials.size(); }
+    /// A number that tells this scene apart from every other scene built by this
+    /// process (copies share it: a scene never changes once built).
+    std::uint64_t serial() const { return serial_; }
+    /// The data this scene was built from, primitives in their original order:
+    /// `Scene(source_data())` builds the very same scene, BVH order included.
+    SceneData source_data() const;
 
     /// Bytes held by the acceleration structure.
     std::size_t acceleration_bytes() const { return bvh_.bytes(); }
@@ -79,6 +100,8 @@ class Scene {
     std::size_t bounded_count_ = 0;
     WideBvh bvh_;
     const LeafKernels* kernels_ = nullptr;
+    std::vector<std::uint32_t> source_index_; // for each primitive, its index in the SceneData given
+    std::uint64_t serial_ = 0;
 };
 
 } // namespace whitted

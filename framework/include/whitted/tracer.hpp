@@ -44,6 +44,16 @@ struct RenderSettings {
     std::uint32_t max_rays_per_pixel = 10000;
 };
 
+/// What a tracer carries from ray to ray within one pixel: handed across the
+/// grading link (framework/link/) so that a lab function run in another process
+/// continues exactly where this one stands.
+struct TracerState {
+    RayStats stats;
+    Color path_weight{1.0};
+    std::uint32_t pixel_rays = 0;
+    bool pixel_cut_short = false;
+};
+
 class Tracer {
   public:
     /// A tracer for one thread: `stats` receives this thread's ray counts and
@@ -67,6 +77,17 @@ class Tracer {
     /// The range stops a hair (a millionth) short of `distance`, so that a surface
     /// passing through the light itself (a lamp on a wall) does not shadow it.
     bool occluded(const Ray& ray, double distance) const;
+
+    /// This tracer's state (ray counts included) and a way to set it back.
+    TracerState state() const { return {stats_, path_weight_, pixel_rays_, pixel_cut_short_}; }
+    void restore(const TracerState& state) const {
+        stats_ = state.stats;
+        path_weight_ = state.path_weight;
+        pixel_rays_ = state.pixel_rays;
+        pixel_cut_short_ = state.pixel_cut_short;
+    }
+    /// True when this tracer writes a ray tree.
+    bool records_tree() const { return tree_ != nullptr; }
 
   private:
     Color shade(const Ray& ray, int depth) const;

@@ -1,0 +1,364 @@
+#include "lab_link.hpp"
+
+#include "whitted/not_implemented.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace whitted::link {
+namespace {
+
+Link* g_current = nullptr; // set once by the program's main
+
+// A frame from the worker is a few hundred bytes; a scene for the worker may be large.
+constexpr std::size_t kMaxFromWorker = std::size_t{1} << 20;
+constexpr std::size_t kMaxFromChecker = std::size_t{1} << 28;
+constexpr int kMaxNesting = 4000;       // calls inside calls, both ways together
+constexpr std::size_t kScenesKept = 8;  // scenes the worker holds at once
+constexpr std::size_t kMaxMessage = 2000;
+
+enum class ExceptionKind : std::uint8_t { not_implemented = 1, std_exception = 2, unknown = 3, refused = 4 };
+
+bool takes_tracer(Op op) {
+    switch (op) {
+    case Op::is_lit: case Op::lambert: case Op::blinn_phong: case Op::reflection: case Op::refraction:
+    case Op::fresnel_blend: return true;
+    default: return false;
+    }
+}
+
+void put_state(Writer& out, const TracerState& state) {
+    out.put(state.stats), out.put(state.path_weight), out.put(state.pixel_rays), out.put(state.pixel_cut_short);
+}
+
+TracerState get_state(Reader& in) {
+    TracerState state;
+    state.stats = in.get<RayStats>();
+    state.path_weight = in.get<Vec3>();
+    state.pixel_rays = in.get<std::uint32_t>();
+    state.pixel_cut_short = in.get<bool>();
+    return state;
+}
+
+std::vector<std::byte> exception_payload(ExceptionKind kind, const std::string& message) {
+    Writer out;
+    out.raw(kind);
+    out.put(message.substr(0, kMaxMessage));
+    return std::move(out.bytes());
+}
+
+// Text from the worker as one may show it: printable ASCII, line breaks and tabs; other bytes as \xNN.
+std::string printable_text(const std::string& text) {
+    static const char* digits = "0123456789abcdef";
+    std::string shown;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if ((byte >= 0x20 && byte < 0x7f) || c == '\n' || c == '\t') {
+            shown += c;
+        } else {
+            shown += "\\x";
+            shown += digits[byte >> 4];
+            shown += digits[byte & 15];
+        }
+    }
+    return shown;
+}
+
+} // namespace
+
+int lab_of(Op op) {
+    constexpr std::array<int, kLastOp + 1> labs{0, 1, 1, 1, 1, 1, 1, 1, 2, 2, 2, 3, 4, 4, 5, 5, 6, 6};
+    const int index = static_cast<int>(op);
+    return index >= 1 && index <= kLastOp ? labs[index] : 0;
+}
+
+std::string name_of(Op op) {
+    static const std::array<const char*, kLastOp + 1> names{
+        "?", "primary_ray", "intersect_sphere", "intersect_plane", "intersect_triangle", "closest_hit",
+        "Scene::closest_hit", "Scene::occluded", "spawn_ray", "is_lit", "lambert", "blinn_phong",
+        "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
+        "fresnel_blend"};
+    const int index = static_cast<int>(op);
+    return std::string(index >= 1 && index <= kLastOp ? names[index] : "?") + "()";
+}
+
+Link::Link(Role role, const ChannelFds& fds, LabSet remote_labs)
+    : role_(role), channel_(fds, role == Role::checker),
+      in_(channel_, role == Role::checker ? kMaxFromWorker : kMaxFromChecker),
+      remote_labs_(remote_labs) {}
+
+Link& Link::current() {
+    if (!g_current) throw std::logic_error("this program has no link to a grading worker or checker");
+    return *g_current;
+}
+
+void Link::set_current(Link* link) { g_current = link; }
+
+void Link::fail(const std::string& reason) {
+    if (broken_.empty()) broken_ = reason;
+    throw LinkError(reason);
+}
+
+// ---- calls out --------------------------------------------------------------------------
+
+Link::Call::Call(Link& link, Op op) : link_(link), lock_(link.mutex_), op_(op) {
+    if (!link_.broken_.empty()) throw LinkError(link_.broken_);
+    args_.raw(static_cast<std::uint16_t>(op));
+}
+
+Link::Call::~Call() {
+    link_.active_.resize(link_.active_.size() - pushed_tracers_);
+    link_.active_scenes_.resize(link_.active_scenes_.size() - pushed_scenes_);
+}
+
+void Link::Call::tracer(const Tracer& tracer) {
+    tracer_ = &tracer;
+    if (link_.role_ == Role::checker) {
+        if (tracer.records_tree()) throw std::logic_error("ray trees are not recorded across the grading link");
+        const std::uint64_t handle = link_.next_handle_++;
+        args_.put(handle);
+        scene(tracer.scene());
+        link_.active_.push_back({handle, &tracer, tracer.scene().serial()});
+        ++pushed_tracers_;
+        args_.put(tracer.settings());
+    } else {
+        const auto active = std::find_if(link_.active_.rbegin(), link_.active_.rend(),
+                                         [&](const ActiveTracer& a) { return a.tracer == &tracer; });
+        if (active == link_.active_.rend())
+            throw std::logic_error(name_of(op_) + " was given a Tracer that the framework did not make: pass on "
+                                   "the tracer your function received");
+        args_.put(active->handle);
+    }
+    put_state(args_, tracer.state());
+}
+
+void Link::Call::scene(const Scene& scene) {
+    args_.put(link_.serial_of(scene));
+    if (link_.role_ == Role::checker) {
+        link_.active_scenes_.push_back(&scene);
+        ++pushed_scenes_;
+    }
+}
+
+void Link::Call::primitives(std::span<const Primitive> primitives) { args_.put_all(primitives); }
+
+std::uint64_t Link::serial_of(const Scene& scene) {
+    if (role_ == Role::checker) {
+        send_scene(scene);
+        return scene.serial();
+    }
+    for (const auto& [serial, held] : scenes_)
+        if (held.get() == &scene) return serial;
+    throw std::logic_error("lab code may only use the scene of the tracer it was given");
+}
+
+void Link::send_scene(const Scene& scene) {
+    const std::uint64_t serial = scene.serial();
+    const auto held = std::find(sent_scenes_.begin(), sent_scenes_.end(), serial);
+    if (held != sent_scenes_.end()) {
+        sent_scenes_.erase(held);
+        sent_scenes_.push_back(serial); // most recently used last
+        return;
+    }
+    std::uint64_t evict = 0;
+    if (sent_scenes_.size() >= kScenesKept) {
+        for (auto it = sent_scenes_.begin(); it != sent_scenes_.end(); ++it) {
+            const bool in_use = std::any_of(active_scenes_.begin(), active_scenes_.end(),
+                                            [&](const Scene* s) { return s->serial() == *it; });
+            if (!in_use) {
+                evict = *it;
+                sent_scenes_.erase(it);
+                break;
+            }
+        }
+    }
+    Writer out;
+    out.put(serial);
+    out.put(evict);
+    out.put(scene.source_data());
+    write_frame(channel_, FrameType::scene, out.bytes());
+    sent_scenes_.push_back(serial);
+}
+
+Reader& Link::Call::send() {
+    ++link_.depth_;
+    struct Unnest {
+        int& depth;
+        ~Unnest() { --depth; }
+    } unnest{link_.depth_};
+    try {
+        if (link_.depth_ > kMaxNesting) link_.fail("calls nested more than " + std::to_string(kMaxNesting) + " deep");
+        write_frame(link_.channel_, FrameType::call, args_.bytes());
+        reply_ = link_.wait_for_reply();
+    } catch (const LinkError& e) {
+        if (link_.role_ == Role::checker) link_.fail(e.what());
+        throw;
+    }
+    reader_ = std::make_unique<Reader>(reply_.payload);
+    if (reply_.type == FrameType::exception) {
+        const auto kind = reader_->raw<ExceptionKind>();
+        std::string message = reader_->get<std::string>();
+        if (link_.role_ == Role::checker) message = printable_text(message.substr(0, kMaxMessage));
+        switch (kind) {
+        case ExceptionKind::not_implemented: throw NotImplemented(message);
+        case ExceptionKind::std_exception: throw RemoteError(message);
+        case ExceptionKind::unknown: throw RemoteUnknownException{};
+        case ExceptionKind::refused:
+            if (link_.role_ == Role::worker) throw LinkError(message);
+            throw RemoteError(message);
+        default: link_.fail("a reply with an unknown kind of exception");
+        }
+    }
+    try {
+        if (tracer_) tracer_->restore(get_state(*reader_));
+    } catch (const LinkError& e) {
+        if (link_.role_ == Role::checker) link_.fail(e.what());
+        throw;
+    }
+    return *reader_;
+}
+
+void Link::Call::done() {
+    if (!reader_->at_end()) {
+        if (link_.role_ == Role::checker) link_.fail("a reply to " + name_of(op_) + " longer than its result");
+        throw LinkError("a reply longer than its result");
+    }
+}
+
+Frame Link::wait_for_reply() {
+    for (;;) {
+        Frame frame = in_.next();
+        switch (frame.type) {
+        case FrameType::reply:
+        case FrameType::exception: return frame;
+        case FrameType::call: serve(frame); break;
+        case FrameType::scene:
+            if (role_ == Role::checker) fail("the worker sent a scene");
+            serve(frame);
+            break;
+        case FrameType::bye: fail("the other side said goodbye in the middle of a call");
+        }
+    }
+}
+
+// ---- calls in ---------------------------------------------------------------------------
+
+void Link::serve_until_closed() {
+    std::lock_guard lock(mutex_);
+    for (;;) {
+        Frame frame;
+        try {
+            frame = in_.next();
+        } catch (const LinkError&) {
+            return; // closed
+        }
+        if (frame.type == FrameType::bye) return;
+        if (frame.type != FrameType::call && frame.type != FrameType::scene)
+            throw LinkError("a reply that answers no call");
+        serve(frame);
+    }
+}
+
+void Link::say_goodbye() {
+    std::lock_guard lock(mutex_);
+    try {
+        write_frame(channel_, FrameType::bye, {});
+    } catch (const LinkError&) {
+        // the other side is gone already
+    }
+}
+
+bool Link::allowed(Op op, const Tracer* tracer) const {
+    const int lab = lab_of(op);
+    if (lab == 0 || (remote_labs_ & lab_bit(lab))) return false; // its code is over there
+    int graded = 1;
+    while (graded <= 6 && !(remote_labs_ & lab_bit(graded))) ++graded;
+    if (lab < graded) return true;                                  // an earlier lab: the student's code may use it
+    return tracer != nullptr && lab <= tracer->settings().stage;   // a later lab, as the render's stage asks
+}
+
+void Link::serve(const Frame& frame) {
+    Reader in(frame.payload);
+    if (frame.type == FrameType::scene) { // worker only
+        const auto serial = in.get<std::uint64_t>();
+        const auto evict = in.get<std::uint64_t>();
+        SceneData data = in.get<SceneData>();
+        if (evict) scenes_.erase(evict);
+        scenes_[serial] = std::make_unique<Scene>(std::move(data));
+        return;
+    }
+    const auto op = static_cast<Op>(in.raw<std::uint16_t>());
+    const std::size_t tracers_before = active_.size(), locals_before = local_tracers_.size();
+    Writer out;
+    ExceptionKind kind{};
+    std::string message;
+    ++depth_;
+    try {
+        if (lab_of(op) == 0) fail("a call of unknown function " + std::to_string(static_cast<int>(op)));
+        if (depth_ > kMaxNesting) fail("calls nested more than " + std::to_string(kMaxNesting) + " deep");
+        if (role_ == Role::checker && !takes_tracer(op) && !allowed(op, nullptr))
+            fail("the graded lab's code called " + name_of(op) + ", which grading does not answer for it");
+        serving_op_ = op;
+        serve_op(*this, op, in, out);
+    } catch (const NotImplemented& e) {
+        kind = ExceptionKind::not_implemented, message = e.what();
+    } catch (const LinkError& e) {
+        kind = ExceptionKind::refused, message = e.what();
+    } catch (const std::exception& e) {
+        kind = ExceptionKind::std_exception, message = e.what();
+    } catch (...) {
+        kind = ExceptionKind::unknown;
+    }
+    --depth_;
+    active_.resize(tracers_before);
+    local_tracers_.resize(locals_before);
+    if (kind == ExceptionKind{}) write_frame(channel_, FrameType::reply, out.bytes());
+    else write_frame(channel_, FrameType::exception, exception_payload(kind, message));
+}
+
+const Tracer& Link::incoming_tracer(Reader& in) {
+    const auto handle = in.get<std::uint64_t>();
+    if (role_ == Role::checker) {
+        const TracerState state = get_state(in);
+        const auto active = std::find_if(active_.rbegin(), active_.rend(),
+                                         [&](const ActiveTracer& a) { return a.handle == handle; });
+        if (active == active_.rend()) fail("a call with a tracer that is not in use");
+        if (!allowed(serving_op_, active->tracer))
+            fail("the graded lab's code called " + name_of(serving_op_) + ", which grading does not answer for it");
+        active->tracer->restore(state);
+        return *active->tracer;
+    }
+    const auto serial = in.get<std::uint64_t>();
+    const RenderSettings settings = in.get<RenderSettings>();
+    const TracerState state = get_state(in);
+    const auto held = scenes_.find(serial);
+    if (held == scenes_.end()) throw LinkError("a call with a scene this worker does not hold");
+    auto local = std::make_unique<LocalTracer>();
+    local->settings = settings;
+    local->tracer = std::make_unique<Tracer>(*held->second, local->settings, local->stats);
+    local->tracer->restore(state);
+    active_.push_back({handle, local->tracer.get(), serial});
+    local_tracers_.push_back(std::move(local));
+    return *local_tracers_.back()->tracer;
+}
+
+const Scene& Link::incoming_scene(Reader& in) {
+    const auto serial = in.get<std::uint64_t>();
+    if (role_ == Role::checker) {
+        for (const Scene* scene : active_scenes_)
+            if (scene->serial() == serial) return *scene;
+        fail("a call with a scene that is not in use");
+    }
+    const auto held = scenes_.find(serial);
+    if (held == scenes_.end()) throw LinkError("a call with a scene this worker does not hold");
+    return *held->second;
+}
+
+void Link::check_hit(const Hit& hit, const Scene& scene) const {
+    if (role_ != Role::checker) return;
+    if (hit.material >= scene.material_count() || hit.primitive >= scene.primitives().size())
+        const_cast<Link*>(this)->fail("a hit whose primitive (" + std::to_string(hit.primitive) + ") or material (" +
+                                      std::to_string(hit.material) + ") is not in the scene");
+}
+
+} // namespace whitted::link
