@@ -59,6 +59,33 @@ function(whitted_split_programs)
     set_tests_properties(split.lab${number}.stub PROPERTIES LABELS "split;stub" TIMEOUT 120
                          PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 0 tests\\.")
   endforeach()
+  # Workers that attack the link: each must leave the reflection tests failed
+  # and the checker saying the link broke (tests/link/).
+  add_executable(raw_hostile_worker ${PROJECT_SOURCE_DIR}/tests/link/raw_hostile_worker.cpp)
+  target_link_libraries(raw_hostile_worker PRIVATE whitted_link)
+  whitted_lab_object(hostile_04_reflection ${PROJECT_SOURCE_DIR}/tests/link/hostile_reflection.cpp)
+  whitted_worker(hostile_reflection_worker hostile 04_reflection)
+  set(attacks raw:garbage raw:oversized raw:short_reply raw:long_reply raw:goodbye raw:scene_from_worker
+              raw:exit0 raw:abort raw:forged_positions lab:later_lab lab:forged_hit lab:own_tracer)
+  foreach(attack IN LISTS attacks)
+    string(REPLACE ":" ";" parts ${attack})
+    list(GET parts 0 kind)
+    list(GET parts 1 mode)
+    if(kind STREQUAL "raw")
+      set(worker raw_hostile_worker)
+    else()
+      set(worker hostile_reflection_worker)
+    endif()
+    set(expected "\\[  PASSED  \\] 0 tests\\.")
+    if(NOT mode STREQUAL "own_tracer")
+      string(APPEND expected "[^\n]*\n(.|\n)*grading (link broken|worker killed|worker exited)")
+    endif()
+    add_test(NAME split.hostile.${mode}
+             COMMAND check_04_reflection --worker=$<TARGET_FILE:${worker}> --gtest_filter=Reflection.*:HiddenReflection.*)
+    set_tests_properties(split.hostile.${mode} PROPERTIES LABELS "split;hostile" TIMEOUT 60
+      ENVIRONMENT WHITTED_HOSTILE=${mode} PASS_REGULAR_EXPRESSION "${expected}")
+  endforeach()
+
   whitted_checker(check_integration labtests_integration ${WHITTED_LABS})
   whitted_worker(worker_integration_reference reference ${WHITTED_LABS})
   add_test(NAME split.integration.reference COMMAND check_integration --worker=$<TARGET_FILE:worker_integration_reference> --gtest_brief=1)

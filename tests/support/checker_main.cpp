@@ -62,13 +62,25 @@ WorkerProcess start_worker(const char* program) {
     return {pid, pair.checker};
 }
 
-// Reports how the link and the worker ended; true when both ended well.
+// Reports how the link and the worker ended; true when both ended well. A
+// worker that does not end within two seconds of goodbye is killed.
 bool ended_well(const Link& link, const WorkerProcess& worker) {
+    std::fflush(stdout);
     bool well = link.broken().empty();
     if (!well) std::fprintf(stderr, "grading link broken: %s\n", link.broken().c_str());
     if (worker.pid > 0) {
         int status = 0;
-        waitpid(worker.pid, &status, 0);
+        int waited_ms = 0;
+        while (waitpid(worker.pid, &status, WNOHANG) == 0) {
+            if (waited_ms >= 2000) {
+                std::fprintf(stderr, "grading worker did not end after goodbye: killed\n");
+                kill(worker.pid, SIGKILL);
+                waitpid(worker.pid, &status, 0);
+                return false;
+            }
+            usleep(10000);
+            waited_ms += 10;
+        }
         if (WIFSIGNALED(status)) {
             std::fprintf(stderr, "grading worker killed by signal %d (%s)\n", WTERMSIG(status),
                          strsignal(WTERMSIG(status)));
