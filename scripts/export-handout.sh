@@ -11,7 +11,7 @@ if [ -e "$out" ] && [ -n "$(ls -A "$out" 2>/dev/null)" ]; then
 fi
 
 # What stays with the instructor.
-private='^(solution/|tests/hidden/|tests/fuzz/|scripts/fuzz\.sh$|scripts/lib/|docs/robustness\.md$|tests/mistakes/|tests/calibration/|tests/solution/|tests/grader/|tests/rubric\.json$|scripts/(prove-tests|test-grader|test-report-browser|test-hostile|export-handout|test-handout|calibrate-gate|render-gallery)\.sh$|docs/instructors\.md$|docs/grading\.md$|docs/benchmark\.md$|framework/bench/embree_|tests/bench/embree_|docs/images/bench_chart\.svg$|docs/handout/|\.ci/|README\.md$)'
+private='^(solution/|tests/hidden/|tests/fuzz/|scripts/fuzz\.sh$|scripts/lib/|docs/robustness\.md$|tests/mistakes/|tests/calibration/|tests/solution/|tests/grader/|tests/link/|tests/rubric\.json$|scripts/(prove-tests|test-grader|test-report-browser|test-hostile|export-handout|test-handout|calibrate-gate|render-gallery)\.sh$|docs/instructors\.md$|docs/grading\.md$|docs/benchmark\.md$|framework/bench/embree_|tests/bench/embree_|docs/images/bench_chart\.svg$|docs/handout/|\.ci/|README\.md$)'
 
 if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
     files=$(git ls-files --cached --others --exclude-standard)

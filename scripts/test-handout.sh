@@ -13,7 +13,7 @@ handout="$work/handout"
 fail() { echo "test-handout: $*" >&2; exit 1; }
 
 bash scripts/export-handout.sh "$handout" > /dev/null
-for private in solution tests/hidden tests/mistakes tests/solution tests/rubric.json docs/instructors.md; do
+for private in solution tests/hidden tests/mistakes tests/solution tests/link tests/rubric.json docs/instructors.md; do
     [ ! -e "$handout/$private" ] || fail "the handout contains $private"
 done
 # The handout shares shared/ with the instructor tree, for the SPD scenes.
