@@ -46,6 +46,8 @@ function(whitted_worker target set)
   target_link_libraries(${target} PRIVATE ${labs} whitted_link)
 endfunction()
 
+# The link's tests run one at a time (RUN_SERIAL): a checker and its worker
+# each want a core, and two pairs on two cores slow each other about twice.
 function(whitted_split_programs)
   foreach(lab IN LISTS WHITTED_LABS)
     whitted_lab_number(number ${lab})
@@ -53,10 +55,10 @@ function(whitted_split_programs)
     whitted_worker(worker_${lab}_reference reference ${lab})
     whitted_worker(worker_${lab}_stub student ${lab})
     add_test(NAME split.lab${number}.reference COMMAND check_${lab} --worker=$<TARGET_FILE:worker_${lab}_reference> --gtest_brief=1)
-    set_tests_properties(split.lab${number}.reference PROPERTIES LABELS "split;lab${number}" TIMEOUT 120)
+    set_tests_properties(split.lab${number}.reference PROPERTIES LABELS "split;lab${number}" TIMEOUT 600 RUN_SERIAL TRUE)
     # Every test fails with the untouched stub: none passes.
     add_test(NAME split.lab${number}.stub COMMAND check_${lab} --worker=$<TARGET_FILE:worker_${lab}_stub>)
-    set_tests_properties(split.lab${number}.stub PROPERTIES LABELS "split;stub" TIMEOUT 120
+    set_tests_properties(split.lab${number}.stub PROPERTIES LABELS "split;stub" TIMEOUT 600 RUN_SERIAL TRUE
                          PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 0 tests\\.")
   endforeach()
   # Workers that attack the link: each must leave the reflection tests failed
@@ -82,12 +84,12 @@ function(whitted_split_programs)
     endif()
     add_test(NAME split.hostile.${mode}
              COMMAND check_04_reflection --worker=$<TARGET_FILE:${worker}> --gtest_filter=Reflection.*:HiddenReflection.*)
-    set_tests_properties(split.hostile.${mode} PROPERTIES LABELS "split;hostile" TIMEOUT 60
+    set_tests_properties(split.hostile.${mode} PROPERTIES LABELS "split;hostile" TIMEOUT 600 RUN_SERIAL TRUE
       ENVIRONMENT WHITTED_HOSTILE=${mode} PASS_REGULAR_EXPRESSION "${expected}")
   endforeach()
 
   whitted_checker(check_integration labtests_integration ${WHITTED_LABS})
   whitted_worker(worker_integration_reference reference ${WHITTED_LABS})
   add_test(NAME split.integration.reference COMMAND check_integration --worker=$<TARGET_FILE:worker_integration_reference> --gtest_brief=1)
-  set_tests_properties(split.integration.reference PROPERTIES LABELS "split;integration" TIMEOUT 120)
+  set_tests_properties(split.integration.reference PROPERTIES LABELS "split;integration" TIMEOUT 600 RUN_SERIAL TRUE)
 endfunction()
