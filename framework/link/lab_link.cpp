@@ -1,5 +1,6 @@
 #include "lab_link.hpp"
 
+#include "printable.hpp"
 #include "whitted/not_implemented.hpp"
 
 #include <algorithm>
@@ -27,41 +28,11 @@ bool takes_tracer(Op op) {
     }
 }
 
-void put_state(Writer& out, const TracerState& state) {
-    out.put(state.stats), out.put(state.path_weight), out.put(state.pixel_rays), out.put(state.pixel_cut_short);
-}
-
-TracerState get_state(Reader& in) {
-    TracerState state;
-    state.stats = in.get<RayStats>();
-    state.path_weight = in.get<Vec3>();
-    state.pixel_rays = in.get<std::uint32_t>();
-    state.pixel_cut_short = in.get<bool>();
-    return state;
-}
-
 std::vector<std::byte> exception_payload(ExceptionKind kind, const std::string& message) {
     Writer out;
     out.raw(kind);
     out.put(message.substr(0, kMaxMessage));
     return std::move(out.bytes());
-}
-
-// Text from the worker as one may show it: printable ASCII, line breaks and tabs; other bytes as \xNN.
-std::string printable_text(const std::string& text) {
-    static const char* digits = "0123456789abcdef";
-    std::string shown;
-    for (const char c : text) {
-        const auto byte = static_cast<unsigned char>(c);
-        if ((byte >= 0x20 && byte < 0x7f) || c == '\n' || c == '\t') {
-            shown += c;
-        } else {
-            shown += "\\x";
-            shown += digits[byte >> 4];
-            shown += digits[byte & 15];
-        }
-    }
-    return shown;
 }
 
 } // namespace
@@ -118,7 +89,7 @@ void Link::Call::tracer(const Tracer& tracer) {
         const std::uint64_t handle = link_.next_handle_++;
         args_.put(handle);
         scene(tracer.scene());
-        link_.active_.push_back({handle, &tracer, tracer.scene().serial()});
+        link_.active_.push_back({handle, &tracer});
         ++pushed_tracers_;
         args_.put(tracer.settings());
     } else {
@@ -129,7 +100,7 @@ void Link::Call::tracer(const Tracer& tracer) {
                                    "the tracer your function received");
         args_.put(active->handle);
     }
-    put_state(args_, tracer.state());
+    args_.put(tracer.state());
 }
 
 void Link::Call::scene(const Scene& scene) {
@@ -198,7 +169,7 @@ Reader& Link::Call::send() {
     if (reply_.type == FrameType::exception) {
         const auto kind = reader_->raw<ExceptionKind>();
         std::string message = reader_->get<std::string>();
-        if (link_.role_ == Role::checker) message = printable_text(message.substr(0, kMaxMessage));
+        if (link_.role_ == Role::checker) message = detail::escaped_bytes(message.substr(0, kMaxMessage), true);
         switch (kind) {
         case ExceptionKind::not_implemented: throw NotImplemented(message);
         case ExceptionKind::std_exception: throw RemoteError(message);
@@ -210,7 +181,7 @@ Reader& Link::Call::send() {
         }
     }
     try {
-        if (tracer_) tracer_->restore(get_state(*reader_));
+        if (tracer_) tracer_->restore(reader_->get<TracerState>());
     } catch (const LinkError& e) {
         if (link_.role_ == Role::checker) link_.fail(e.what());
         throw;
@@ -298,7 +269,6 @@ void Link::serve(const Frame& frame) {
         if (depth_ > kMaxNesting) fail("calls nested more than " + std::to_string(kMaxNesting) + " deep");
         if (role_ == Role::checker && !takes_tracer(op) && !allowed(op, nullptr))
             fail("the graded lab's code called " + name_of(op) + ", which grading does not answer for it");
-        serving_op_ = op;
         serve_op(*this, op, in, out);
     } catch (const NotImplemented& e) {
         kind = ExceptionKind::not_implemented, message = e.what();
@@ -316,28 +286,28 @@ void Link::serve(const Frame& frame) {
     else write_frame(channel_, FrameType::exception, exception_payload(kind, message));
 }
 
-const Tracer& Link::incoming_tracer(Reader& in) {
+const Tracer& Link::incoming_tracer(Reader& in, Op op) {
     const auto handle = in.get<std::uint64_t>();
     if (role_ == Role::checker) {
-        const TracerState state = get_state(in);
+        const auto state = in.get<TracerState>();
         const auto active = std::find_if(active_.rbegin(), active_.rend(),
                                          [&](const ActiveTracer& a) { return a.handle == handle; });
         if (active == active_.rend()) fail("a call with a tracer that is not in use");
-        if (!allowed(serving_op_, active->tracer))
-            fail("the graded lab's code called " + name_of(serving_op_) + ", which grading does not answer for it");
+        if (!allowed(op, active->tracer))
+            fail("the graded lab's code called " + name_of(op) + ", which grading does not answer for it");
         active->tracer->restore(state);
         return *active->tracer;
     }
     const auto serial = in.get<std::uint64_t>();
     const RenderSettings settings = in.get<RenderSettings>();
-    const TracerState state = get_state(in);
+    const auto state = in.get<TracerState>();
     const auto held = scenes_.find(serial);
     if (held == scenes_.end()) throw LinkError("a call with a scene this worker does not hold");
     auto local = std::make_unique<LocalTracer>();
     local->settings = settings;
     local->tracer = std::make_unique<Tracer>(*held->second, local->settings, local->stats);
     local->tracer->restore(state);
-    active_.push_back({handle, local->tracer.get(), serial});
+    active_.push_back({handle, local->tracer.get()});
     local_tracers_.push_back(std::move(local));
     return *local_tracers_.back()->tracer;
 }
@@ -354,10 +324,10 @@ const Scene& Link::incoming_scene(Reader& in) {
     return *held->second;
 }
 
-void Link::check_hit(const Hit& hit, const Scene& scene) const {
+void Link::check_hit(const Hit& hit, const Scene& scene) {
     if (role_ != Role::checker) return;
     if (hit.material >= scene.material_count() || hit.primitive >= scene.primitives().size())
-        const_cast<Link*>(this)->fail("a hit whose primitive (" + std::to_string(hit.primitive) + ") or material (" +
+        fail("a hit whose primitive (" + std::to_string(hit.primitive) + ") or material (" +
                                       std::to_string(hit.material) + ") is not in the scene");
 }
 

@@ -96,20 +96,20 @@ class Link {
     class Call;
 
     // ---- for the serving side (serve_ops.cpp) ----
-    /// The tracer an incoming call refers to; a worker makes a local one, kept
-    /// until the call ends. Throws LinkError for a handle that is not active.
-    const Tracer& incoming_tracer(Reader& in);
+    /// The tracer an incoming call of `op` refers to; a worker makes a local
+    /// one, kept until the call ends. Throws LinkError for a handle that is not
+    /// active, and in the checker for a call its policy does not answer.
+    const Tracer& incoming_tracer(Reader& in, Op op);
     /// The scene an incoming scene query refers to.
     const Scene& incoming_scene(Reader& in);
     /// Checks a hit received for `scene` (its indices) before anything uses it.
-    void check_hit(const Hit& hit, const Scene& scene) const;
+    void check_hit(const Hit& hit, const Scene& scene);
 
   private:
     friend class Call;
     struct ActiveTracer {
         std::uint64_t handle;
         const Tracer* tracer;
-        std::uint64_t scene_serial; // the checker's serial for tracer->scene()
     };
 
     void send_scene(const Scene& scene);
@@ -133,7 +133,6 @@ class Link {
     std::map<std::uint64_t, std::unique_ptr<Scene>> scenes_;
     std::vector<const Scene*> active_scenes_; // scenes of the calls in progress (checker)
     std::vector<std::unique_ptr<LocalTracer>> local_tracers_; // worker: tracers of the calls it serves
-    Op serving_op_ = Op::primary_ray;
 };
 
 /// One outgoing call: encode the arguments, send, serve what comes back until

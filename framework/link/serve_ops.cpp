@@ -7,20 +7,21 @@
 namespace whitted::link {
 namespace {
 
-template <class S>
-S get_shape(Reader& in) {
-    const Shape shape = in.get<Shape>();
-    if (const S* s = std::get_if<S>(&shape)) return *s;
-    throw LinkError("a call with the wrong kind of shape");
-}
-
 void end_of(Reader& in) {
     if (!in.at_end()) throw LinkError("a call with more arguments than its function takes");
 }
 
-void put_state(Writer& out, const Tracer& tracer) {
-    const TracerState state = tracer.state();
-    out.put(state.stats), out.put(state.path_weight), out.put(state.pixel_rays), out.put(state.pixel_cut_short);
+/// intersect_sphere(), intersect_plane() or intersect_triangle(): (ray, shape of kind S, range).
+template <class S>
+void serve_intersect(std::optional<Hit> (*intersect_shape)(const Ray&, const S&, Interval), Reader& in,
+                     Writer& out) {
+    const Ray ray = in.get<Ray>();
+    const Shape shape = in.get<Shape>();
+    const S* s = std::get_if<S>(&shape);
+    if (!s) throw LinkError("a call with the wrong kind of shape");
+    const Interval range = in.get<Interval>();
+    end_of(in);
+    out.put(intersect_shape(ray, *s, range));
 }
 
 /// The tracer and the hit of a shading call, the hit checked against the tracer's scene.
@@ -28,8 +29,8 @@ struct Shading {
     const Tracer& tracer;
     Hit hit;
 };
-Shading get_shading(Link& link, Reader& in) {
-    const Tracer& tracer = link.incoming_tracer(in);
+Shading get_shading(Link& link, Op op, Reader& in) {
+    const Tracer& tracer = link.incoming_tracer(in, op);
     const Hit hit = in.get<Hit>();
     link.check_hit(hit, tracer.scene());
     return {tracer, hit};
@@ -46,27 +47,9 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         end_of(in);
         return out.put(primary_ray(camera, x, y));
     }
-    case Op::intersect_sphere: {
-        const Ray ray = in.get<Ray>();
-        const Sphere sphere = get_shape<Sphere>(in);
-        const Interval range = in.get<Interval>();
-        end_of(in);
-        return out.put(intersect_sphere(ray, sphere, range));
-    }
-    case Op::intersect_plane: {
-        const Ray ray = in.get<Ray>();
-        const Plane plane = get_shape<Plane>(in);
-        const Interval range = in.get<Interval>();
-        end_of(in);
-        return out.put(intersect_plane(ray, plane, range));
-    }
-    case Op::intersect_triangle: {
-        const Ray ray = in.get<Ray>();
-        const Triangle triangle = get_shape<Triangle>(in);
-        const Interval range = in.get<Interval>();
-        end_of(in);
-        return out.put(intersect_triangle(ray, triangle, range));
-    }
+    case Op::intersect_sphere: return serve_intersect(intersect_sphere, in, out);
+    case Op::intersect_plane: return serve_intersect(intersect_plane, in, out);
+    case Op::intersect_triangle: return serve_intersect(intersect_triangle, in, out);
     case Op::closest_hit: {
         const Ray ray = in.get<Ray>();
         std::vector<Primitive> primitives(in.count(41));
@@ -96,26 +79,26 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         return out.put(spawn_ray(hit, direction));
     }
     case Op::is_lit: {
-        const Shading s = get_shading(link, in);
+        const Shading s = get_shading(link, op, in);
         const PointLight light = in.get<PointLight>();
         end_of(in);
         const bool lit = is_lit(s.tracer, s.hit, light);
-        put_state(out, s.tracer);
+        out.put(s.tracer.state());
         return out.put(lit);
     }
     case Op::lambert: {
-        const Shading s = get_shading(link, in);
+        const Shading s = get_shading(link, op, in);
         end_of(in);
         const Color color = lambert(s.tracer, s.hit);
-        put_state(out, s.tracer);
+        out.put(s.tracer.state());
         return out.put(color);
     }
     case Op::blinn_phong: {
-        const Shading s = get_shading(link, in);
+        const Shading s = get_shading(link, op, in);
         const Vec3 wo = in.get<Vec3>();
         end_of(in);
         const Color color = blinn_phong(s.tracer, s.hit, wo);
-        put_state(out, s.tracer);
+        out.put(s.tracer.state());
         return out.put(color);
     }
     case Op::mirror_direction: {
@@ -127,14 +110,14 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
     case Op::reflection:
     case Op::refraction:
     case Op::fresnel_blend: {
-        const Shading s = get_shading(link, in);
+        const Shading s = get_shading(link, op, in);
         const Vec3 wo = in.get<Vec3>();
         const int depth = in.get<int>();
         end_of(in);
         const Color color = op == Op::reflection   ? reflection(s.tracer, s.hit, wo, depth)
                             : op == Op::refraction ? refraction(s.tracer, s.hit, wo, depth)
                                                    : fresnel_blend(s.tracer, s.hit, wo, depth);
-        put_state(out, s.tracer);
+        out.put(s.tracer.state());
         return out.put(color);
     }
     case Op::refracted_direction: {

@@ -50,8 +50,9 @@ Frame FrameReader::next() {
 
 void Writer::put(const std::string& text) {
     put(static_cast<std::uint64_t>(text.size()));
-    const auto* bytes = reinterpret_cast<const std::byte*>(text.data());
-    bytes_.insert(bytes_.end(), bytes, bytes + text.size());
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + text.size());
+    if (!text.empty()) std::memcpy(bytes_.data() + at, text.data(), text.size());
 }
 void Writer::put(const Ray& ray) { put(ray.origin), put(ray.direction); }
 void Writer::put(const Interval& interval) { put(interval.min), put(interval.max); }
@@ -90,6 +91,9 @@ void Writer::put(const RenderSettings& s) {
 }
 void Writer::put(const RayStats& s) {
     put(s.eye), put(s.shadow), put(s.reflected), put(s.refracted), put(s.pixels_cut_short);
+}
+void Writer::put(const TracerState& s) {
+    put(s.stats), put(s.path_weight), put(s.pixel_rays), put(s.pixel_cut_short);
 }
 void Writer::put(const SceneData& d) {
     put(d.camera), put(d.background), put(d.ambient);
@@ -225,6 +229,14 @@ template <> RayStats Reader::get<RayStats>() {
     RayStats s;
     s.eye = get<std::uint64_t>(), s.shadow = get<std::uint64_t>(), s.reflected = get<std::uint64_t>();
     s.refracted = get<std::uint64_t>(), s.pixels_cut_short = get<std::uint64_t>();
+    return s;
+}
+template <> TracerState Reader::get<TracerState>() {
+    TracerState s;
+    s.stats = get<RayStats>();
+    s.path_weight = get<Vec3>();
+    s.pixel_rays = get<std::uint32_t>();
+    s.pixel_cut_short = get<bool>();
     return s;
 }
 template <> SceneData Reader::get<SceneData>() {

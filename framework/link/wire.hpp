@@ -65,8 +65,9 @@ class Writer {
     template <class T>
         requires std::is_arithmetic_v<T> || std::is_enum_v<T>
     void raw(T value) {
-        const auto* bytes = reinterpret_cast<const std::byte*>(&value);
-        bytes_.insert(bytes_.end(), bytes, bytes + sizeof(T));
+        const std::size_t at = bytes_.size();
+        bytes_.resize(at + sizeof(T));
+        std::memcpy(bytes_.data() + at, &value, sizeof(T));
     }
     void put(double value) { raw(value); }
     void put(int value) { raw(static_cast<std::int32_t>(value)); }
@@ -86,6 +87,7 @@ class Writer {
     void put(const PointLight& light);
     void put(const RenderSettings& settings);
     void put(const RayStats& stats);
+    void put(const TracerState& state);
     void put(const SceneData& data);
     template <class T>
     void put(const std::optional<T>& value) {
@@ -148,6 +150,7 @@ template <> Material Reader::get<Material>();
 template <> PointLight Reader::get<PointLight>();
 template <> RenderSettings Reader::get<RenderSettings>();
 template <> RayStats Reader::get<RayStats>();
+template <> TracerState Reader::get<TracerState>();
 template <> SceneData Reader::get<SceneData>();
 template <> std::optional<Hit> Reader::get<std::optional<Hit>>();
 template <> std::optional<Vec3> Reader::get<std::optional<Vec3>>();

@@ -2,12 +2,11 @@
 
 namespace whitted::detail {
 
-std::string quoted_printable(std::string_view word) {
-    constexpr std::size_t kMostShown = 60;
-    std::string shown = "'";
-    for (const char c : word.substr(0, kMostShown)) {
+std::string escaped_bytes(std::string_view text, bool keep_line_breaks) {
+    std::string shown;
+    for (const char c : text) {
         const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte < 0x7f) {
+        if ((byte >= 0x20 && byte < 0x7f) || (keep_line_breaks && (c == '\n' || c == '\t'))) {
             shown += c;
         } else {
             static const char digits[] = "0123456789abcdef";
@@ -16,8 +15,12 @@ std::string quoted_printable(std::string_view word) {
             shown += digits[byte & 15];
         }
     }
-    if (word.size() > kMostShown) shown += "...";
-    return shown + "'";
+    return shown;
+}
+
+std::string quoted_printable(std::string_view word) {
+    constexpr std::size_t kMostShown = 60;
+    return "'" + escaped_bytes(word.substr(0, kMostShown)) + (word.size() > kMostShown ? "...'" : "'");
 }
 
 } // namespace whitted::detail

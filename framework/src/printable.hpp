@@ -11,4 +11,8 @@ namespace whitted::detail {
 /// whatever bytes the file holds.
 std::string quoted_printable(std::string_view word);
 
+/// The text with control and non-ASCII bytes as \xNN; with `keep_line_breaks`,
+/// newlines and tabs stay as they are.
+std::string escaped_bytes(std::string_view text, bool keep_line_breaks = false);
+
 } // namespace whitted::detail

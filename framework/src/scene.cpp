@@ -39,7 +39,7 @@ std::uint64_t next_serial() {
 [[gnu::weak]] const RemoteSceneQueries* remote_scene_queries() { return nullptr; }
 
 Scene::Scene(SceneData data, const LeafKernels* kernels)
-    : data_(std::move(data)), kernels_(kernels), serial_(next_serial()) {
+    : data_(std::move(data)), kernels_(kernels), remote_(remote_scene_queries()), serial_(next_serial()) {
     // Bounded primitives go into the BVH, in its order; infinite planes follow.
     std::vector<Primitive> bounded, unbounded;
     std::vector<std::uint32_t> bounded_index, unbounded_index;
@@ -85,8 +85,8 @@ void Scene::apply_vertex_normals(Hit& hit, const Ray& ray) const {
 
 std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     if (kernels_) return closest_hit_with_kernels(ray, t_range);
-    if (const RemoteSceneQueries* remote = remote_scene_queries()) [[unlikely]]
-        return remote->closest_hit(*this, ray, t_range);
+    if (remote_) [[unlikely]]
+        return remote_->closest_hit(*this, ray, t_range);
     const std::span<const Primitive> all = data_.primitives;
     // Infinite planes first: a plane hit shortens the range the BVH must search.
     std::optional<Hit> nearest = whitted::closest_hit(ray, all.subspan(bounded_count_), t_range);
@@ -114,8 +114,8 @@ std::optional<Hit> Scene::closest_hit_with_kernels(const Ray& ray, Interval t_ra
 
 bool Scene::occluded(const Ray& ray, Interval t_range) const {
     if (kernels_) return occluded_with_kernels(ray, t_range);
-    if (const RemoteSceneQueries* remote = remote_scene_queries()) [[unlikely]]
-        return remote->occluded(*this, ray, t_range);
+    if (remote_) [[unlikely]]
+        return remote_->occluded(*this, ray, t_range);
     const std::span<const Primitive> all = data_.primitives;
     for (const Primitive& plane : all.subspan(bounded_count_)) {
         if (intersect(ray, plane, t_range)) return true;

@@ -100,6 +100,7 @@ class Scene {
     std::size_t bounded_count_ = 0;
     WideBvh bvh_;
     const LeafKernels* kernels_ = nullptr;
+    const RemoteSceneQueries* remote_ = nullptr; // remote_scene_queries(), looked up once
     std::vector<std::uint32_t> source_index_; // for each primitive, its index in the SceneData given
     std::uint64_t serial_ = 0;
 };
