@@ -93,3 +93,44 @@ function(whitted_split_programs)
   add_test(NAME split.integration.reference COMMAND check_integration --worker=$<TARGET_FILE:worker_integration_reference> --gtest_brief=1)
   set_tests_properties(split.integration.reference PROPERTIES LABELS "split;integration" TIMEOUT 600 RUN_SERIAL TRUE)
 endfunction()
+
+# The grading kit: what `whitted grade` needs to build a worker from a student's
+# lab file without this tree. grading-kit.txt names, one item a line, the
+# compiler and its arguments for a lab file (those of the labs here), the
+# framework's public headers, the libraries and objects a worker links, and the
+# checker of every lab. The grader copies the files it names to a folder of its
+# own, so that the worker never sees this build. Target grading_parts builds
+# them all (the grader brings it up to date before each grading).
+function(whitted_grading_kit)
+  string(TOUPPER "${CMAKE_BUILD_TYPE}" type)
+  separate_arguments(flags UNIX_COMMAND "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${type}} ${CMAKE_CXX20_STANDARD_COMPILE_OPTION}")
+  separate_arguments(link_flags UNIX_COMMAND "${CMAKE_EXE_LINKER_FLAGS} ${CMAKE_EXE_LINKER_FLAGS_${type}}")
+  set(lab student_01_ray_casting)
+  set(text "# whitted grade's kit for building workers (cmake/WhittedSplit.cmake); one item a line\n")
+  string(APPEND text "build-type ${CMAKE_BUILD_TYPE}\n")
+  string(APPEND text "compiler ${CMAKE_CXX_COMPILER}\n")
+  foreach(flag IN LISTS flags)
+    string(APPEND text "compile ${flag}\n")
+  endforeach()
+  string(APPEND text "compile $<JOIN:$<TARGET_PROPERTY:${lab},COMPILE_OPTIONS>,\ncompile >\n")
+  string(APPEND text "define $<JOIN:$<TARGET_PROPERTY:${lab},COMPILE_DEFINITIONS>,\ndefine >\n")
+  foreach(flag IN LISTS link_flags)
+    string(APPEND text "link ${flag}\n")
+  endforeach()
+  string(APPEND text "link $<JOIN:$<TARGET_PROPERTY:worker_01_ray_casting_stub,LINK_OPTIONS>,\nlink >\n")
+  string(APPEND text "link -pthread\n")
+  string(APPEND text "headers ${PROJECT_SOURCE_DIR}/framework/include/whitted\n")
+  string(APPEND text "main $<TARGET_OBJECTS:whitted_worker_main>\n")
+  set(parts whitted_worker_main whitted_link whitted_framework)
+  foreach(lab IN LISTS WHITTED_LABS)
+    string(APPEND text "remote ${lab} $<TARGET_OBJECTS:remote_${lab}>\n")
+    string(APPEND text "checker ${lab} $<TARGET_FILE:check_${lab}>\n")
+    list(APPEND parts remote_${lab} check_${lab})
+  endforeach()
+  string(APPEND text "checker integration $<TARGET_FILE:check_integration>\n")
+  # Libraries last, in link order.
+  string(APPEND text "library $<TARGET_FILE:whitted_link>\nlibrary $<TARGET_FILE:whitted_framework>\n")
+  file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/grading-kit.txt CONTENT "${text}")
+  add_custom_target(grading_parts)
+  add_dependencies(grading_parts ${parts} check_integration)
+endfunction()

@@ -15,7 +15,7 @@ ProcessRun run_child(std::vector<std::string> arguments, Limits limits = {}) {
     arguments.insert(arguments.begin(), MISBEHAVING_CHILD);
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("runner_test_" + std::to_string(getpid()));
     std::filesystem::create_directories(folder);
-    ProcessRun run = run_process({arguments, folder, {{"WHITTED_RUNNER_TEST", "42"}}, limits, {}});
+    ProcessRun run = run_process({arguments, folder, {{"WHITTED_RUNNER_TEST", "42"}}, limits, {}, {}, false});
     std::filesystem::remove_all(folder);
     return run;
 }
@@ -119,7 +119,7 @@ TEST(ProcessRunner, PeakMemoryOfTheChildIsMeasured) {
 }
 
 TEST(ProcessRunner, MissingProgramFailsToStart) {
-    const ProcessRun run = run_process({{"/no/such/program"}, {}, {}, {}, {}});
+    const ProcessRun run = run_process({{"/no/such/program"}, {}, {}, {}, {}, {}, false});
     EXPECT_EQ(run.end, ProcessRun::End::failed_to_start);
     EXPECT_NE(run.start_error.find("No such file"), std::string::npos) << run.start_error;
 }

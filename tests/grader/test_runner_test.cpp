@@ -1,4 +1,6 @@
-// Each GoogleTest test runs in its own process and ends with the right status.
+// Each GoogleTest test runs as its own pair of processes (a checker and a
+// worker) and ends with the right status. fake_lab plays the checker (its
+// tests end in every way a test can); misbehaving_child plays the worker.
 #include "grade/test_runner.hpp"
 
 #include <gtest/gtest.h>
@@ -15,7 +17,7 @@ class TestRunnerTest : public ::testing::Test {
 protected:
     void SetUp() override {
         folder = std::filesystem::temp_directory_path() / ("test_runner_test_" + std::to_string(getpid()));
-        program = TestProgram{"02_shadows", FAKE_LAB, folder, {}, {{folder.string() + "/", ""}}, {}};
+        program = TestProgram{"02_shadows", FAKE_LAB, {MISBEHAVING_CHILD, "exit", "0"}, folder, {}, {{folder.string() + "/", ""}}, {}};
         program.limits.wall_seconds = 1.0;
     }
     void TearDown() override { std::filesystem::remove_all(folder); }
@@ -37,7 +39,7 @@ TEST_F(TestRunnerTest, ListsEveryTestInOrder) {
 }
 
 TEST_F(TestRunnerTest, ListingAProgramThatDoesNotStartSaysSo) {
-    program.program = "/no/such/grade_program";
+    program.checker = "/no/such/check_program";
     std::string problem;
     EXPECT_TRUE(list_tests(program, problem).empty());
     EXPECT_NE(problem.find("could not start"), std::string::npos) << problem;
@@ -75,4 +77,34 @@ TEST_F(TestRunnerTest, ImageNumbersAndPicturesAreCollected) {
     EXPECT_DOUBLE_EQ(outcome.image->failing_fraction, 0.02);
     EXPECT_EQ(outcome.image->worst_x, 3);
     EXPECT_EQ(outcome.pictures, folder / "FakeImage.IsTwoPercentOff");
+}
+
+// The worker's ending comes before the checker's verdict: a test the checker
+// passed does not pass when the student's code crashed, hung or lingered.
+TEST_F(TestRunnerTest, TheWorkersEndingComesFirst) {
+    program.worker = {MISBEHAVING_CHILD, "segfault"};
+    TestOutcome outcome = run_test(program, "Fake.Passes");
+    EXPECT_EQ(outcome.status, Status::crash);
+    EXPECT_EQ(outcome.message.rfind("your code was killed by SIGSEGV", 0), 0u) << outcome.message;
+
+    program.worker = {MISBEHAVING_CHILD, "exit", "1"};
+    outcome = run_test(program, "Fake.Passes");
+    EXPECT_EQ(outcome.status, Status::crash);
+    EXPECT_EQ(outcome.message, "your code ended the program (exit code 1) before the test was over");
+
+    program.worker = {MISBEHAVING_CHILD, "loop"};
+    EXPECT_EQ(run_test(program, "Fake.Loops").status, Status::timeout);
+
+    program.worker = {MISBEHAVING_CHILD, "sleep"};
+    program.linger_seconds = 0.2;
+    outcome = run_test(program, "Fake.Passes");
+    EXPECT_EQ(outcome.status, Status::crash);
+    EXPECT_NE(outcome.message.find("went on running after the test was over"), std::string::npos) << outcome.message;
+}
+
+TEST_F(TestRunnerTest, FolderNamesStayInTheirFolder) {
+    EXPECT_EQ(folder_name("Suite.Test/3"), "Suite.Test_3");
+    EXPECT_EQ(folder_name(".."), "_..");
+    EXPECT_EQ(folder_name("."), "_.");
+    EXPECT_EQ(folder_name(""), "_");
 }

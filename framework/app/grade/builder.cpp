@@ -1,36 +1,17 @@
 #include "grade/builder.hpp"
+#include "grade/folder_lock.hpp"
 #include "grade/process_runner.hpp"
 #include "grade/text.hpp"
 
 #include <fstream>
 #include <regex>
+#include <stdexcept>
 
 namespace whitted::grade {
-namespace {
 
-BuildStep run_cmake(const BuildFolder& folder, std::vector<std::string> arguments) {
-    arguments.insert(arguments.begin(), "cmake");
-    Limits limits;
-    limits.wall_seconds = folder.timeout_seconds;
-    limits.output_bytes = 256 * 1024; // the first errors come first
-    const ProcessRun run = run_process({arguments, {}, {{"CLICOLOR_FORCE", "0"}, {"LC_ALL", "C"}}, limits, {}});
-    BuildStep step;
-    step.ok = run.end == ProcessRun::End::exited && run.exit_code == 0;
-    step.log = run.output;
-    if (!step.ok) step.log.append("\n").append(describe(run, limits)).append("\n");
-    return step;
-}
+namespace fs = std::filesystem;
 
-bool has_ninja() {
-    Limits limits;
-    limits.wall_seconds = 10;
-    const ProcessRun run = run_process({{"ninja", "--version"}, {}, {}, limits, {}});
-    return run.end == ProcessRun::End::exited && run.exit_code == 0;
-}
-
-} // namespace
-
-std::string cache_entry(const std::filesystem::path& build, const std::string& name) {
+std::string cache_entry(const fs::path& build, const std::string& name) {
     std::ifstream cache(build / "CMakeCache.txt");
     for (std::string line; std::getline(cache, line);) {
         // NAME:TYPE=VALUE
@@ -41,21 +22,31 @@ std::string cache_entry(const std::filesystem::path& build, const std::string& n
     return {};
 }
 
-std::filesystem::path configured_source(const std::filesystem::path& build) { return cache_entry(build, "CMAKE_HOME_DIRECTORY"); }
+fs::path configured_source(const fs::path& build) { return cache_entry(build, "CMAKE_HOME_DIRECTORY"); }
 
-BuildStep configure(const BuildFolder& folder) {
-    std::vector<std::string> arguments = {"-S", folder.instructor_tree.string(), "-B", folder.build.string(),
-                                          std::string("-DCMAKE_BUILD_TYPE=") + grading_build_type, "-DWHITTED_GRADING=ON", "-DBUILD_TESTING=OFF",
-                                          "-DWHITTED_LABS_DIR=" + folder.labs.string(),
-                                          "-DWHITTED_GRADING_PREBUILT=" + folder.prebuilt.string()};
-    if (configured_source(folder.build).empty() && has_ninja()) arguments.insert(arguments.begin(), {"-G", "Ninja"});
-    return run_cmake(folder, arguments);
-}
-
-BuildStep build_targets(const BuildFolder& folder, const std::vector<std::string>& targets) {
-    std::vector<std::string> arguments = {"--build", folder.build.string(), "-j", std::to_string(folder.jobs), "--target"};
-    arguments.insert(arguments.end(), targets.begin(), targets.end());
-    return run_cmake(folder, arguments);
+void update_instructor_build(const fs::path& build, const fs::path& instructor_tree, int jobs) {
+    const std::string hint = " (build the instructor tree first: make build, or pass --instructor-build)";
+    const fs::path source = configured_source(build);
+    if (source.empty()) throw std::runtime_error(build.string() + " is not a CMake build folder" + hint);
+    std::error_code error;
+    if (!fs::equivalent(source, instructor_tree, error))
+        throw std::runtime_error(build.string() + " was configured from " + source.string() + ", not from " + instructor_tree.string());
+    if (const std::string type = cache_entry(build, "CMAKE_BUILD_TYPE"); type != grading_build_type)
+        throw std::runtime_error(build.string() + " is a " + (type.empty() ? "build without a build type" : type + " build") +
+                                 "; grading needs a " + grading_build_type + " build" + hint);
+    if (cache_entry(build, "BUILD_TESTING") == "OFF") throw std::runtime_error(build.string() + " was configured without tests (-DBUILD_TESTING=OFF)");
+    const FolderLock lock(build);
+    Limits limits;
+    limits.wall_seconds = 1800;
+    limits.output_bytes = 256 * 1024;
+    ProcessSpec spec;
+    spec.argv = {"cmake", "--build", build.string(), "-j", std::to_string(jobs), "--target", "grading_parts"};
+    spec.environment = {{"CLICOLOR_FORCE", "0"}, {"LC_ALL", "C"}};
+    spec.limits = limits;
+    const ProcessRun run = run_process(spec);
+    if (run.end != ProcessRun::End::exited || run.exit_code != 0)
+        throw std::runtime_error("the instructor build's target grading_parts does not build (" + describe(run, limits) + "):\n" +
+                                 trim_text(run.output, 30));
 }
 
 std::string first_compiler_errors(const std::string& log, const std::vector<std::pair<std::string, std::string>>& paths) {

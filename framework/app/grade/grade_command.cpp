@@ -1,10 +1,9 @@
-// `whitted grade SUBMISSION`: build a student's labs against the instructor
-// tree and grade them with the rubric; writes results.json (Gradescope) and
-// report.html. Exit codes: 0 full marks, 1 points lost, 2 usage error,
+// `whitted grade SUBMISSION`: build a student's labs into workers, run every
+// test as the instructor's checker talking to the student's worker, and grade
+// them with the rubric; writes results.json (Gradescope) and report.html. Exit codes: 0 full marks, 1 points lost, 2 usage error,
 // 3 grader failure (the instructor tree does not build, the rubric is wrong).
 #include "commands.hpp"
 #include "grade/builder.hpp"
-#include "grade/folder_lock.hpp"
 #include "grade/grading.hpp"
 #include "grade/html_report.hpp"
 #include "grade/results_json.hpp"
@@ -16,6 +15,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <stdlib.h>
 
 namespace whitted {
 namespace {
@@ -27,9 +27,8 @@ struct GradeOptions {
     std::string submission;
     std::string out = "grading";
     std::string instructor_tree = WHITTED_INSTRUCTOR_TREE;
-    std::string build_cache;
-    std::string prebuilt = WHITTED_INSTRUCTOR_BUILD;
-    bool no_prebuilt = false;
+    std::string instructor_build = WHITTED_INSTRUCTOR_BUILD;
+    bool allow_exposed_answers = false;
     std::string rubric;
     int jobs = 2;
     double timeout = 20.0;
@@ -65,6 +64,17 @@ void write_file(const fs::path& file, const std::string& text) {
     if (!stream.flush()) throw GraderFailure("cannot write " + file.string());
 }
 
+// A new folder of the grader's for the kit and the workers: private to others
+// but enterable (0711), so that the student's code, as another user, reaches
+// only the paths it is given.
+fs::path make_work_folder() {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = (tmp && *tmp ? std::string(tmp) : std::string("/tmp")) + "/whitted-grade-XXXXXX";
+    if (!mkdtemp(pattern.data())) throw GraderFailure("cannot make a folder in " + fs::path(pattern).parent_path().string());
+    fs::permissions(pattern, fs::perms(0711));
+    return pattern;
+}
+
 void print_table(const GradingResult& result, const fs::path& out) {
     std::printf("%-15s %7s / %-7s %s\n", "lab", "points", "max", "tests");
     for (const LabResult& lab : result.labs) std::printf("%s\n", lab_summary_line(lab).c_str());
@@ -84,20 +94,12 @@ int run_grade(const GradeOptions& options) {
     const fs::path submission = fs::weakly_canonical(fs::absolute(options.submission));
     setup.submission_labs = find_lab_folder(submission, labs);
     setup.out = fs::weakly_canonical(fs::absolute(options.out));
-    check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs, setup.instructor_tree});
-    setup.build = options.build_cache.empty() ? setup.out / "build" : fs::weakly_canonical(fs::absolute(options.build_cache));
-    if (!options.build_cache.empty()) {
-        check_folder(setup.build, "CMakeCache.txt", "--build-cache", {submission, setup.submission_labs, setup.instructor_tree, setup.out});
-        const fs::path source = configured_source(setup.build);
-        if (!source.empty() && fs::weakly_canonical(source) != setup.instructor_tree)
-            throw UsageError("the build cache " + setup.build.string() + " was configured from " + source.string());
-        if (!source.empty() && cache_entry(setup.build, "WHITTED_GRADING") != "ON")
-            throw UsageError("the build cache " + setup.build.string() + " is not a grading build (an instructor's build?)");
-    }
-    if (!options.no_prebuilt) setup.prebuilt = fs::weakly_canonical(fs::absolute(options.prebuilt));
+    setup.instructor_build = fs::weakly_canonical(fs::absolute(options.instructor_build));
+    check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs, setup.instructor_tree, setup.instructor_build});
     fs::create_directories(setup.out);
-    write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/, tests/ and build/ here\n");
-    if (options.build_cache.empty()) fs::remove_all(setup.build);
+    write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/ and tests/ here\n");
+    fs::remove_all(setup.out / "build"); // left by graders before the checker/worker split
+    setup.allow_exposed_answers = options.allow_exposed_answers;
     setup.test_limits.wall_seconds = options.timeout;
     setup.test_limits.cpu_seconds = 2 * options.timeout; // the image tests render with two threads
     setup.test_limits.address_space = static_cast<std::size_t>(options.memory_mb) << 20;
@@ -118,18 +120,23 @@ int run_grade(const GradeOptions& options) {
         std::vector<std::string> known = labs;
         known.push_back("integration");
         setup.rubric = load_rubric(options.rubric.empty() ? setup.instructor_tree / "tests" / "rubric.json" : fs::path(options.rubric), known);
-        std::unique_ptr<FolderLock> lock;
-        if (!options.build_cache.empty()) lock = std::make_unique<FolderLock>(setup.build);
+        setup.work = make_work_folder();
         result = grade_submission(setup);
         code = result.max_cents > 0 && result.score_cents == result.max_cents ? 0 : 1;
     } catch (const std::exception& error) { // RubricError, GraderFailure, file system errors
         problem = replace_paths(error.what(), shown_paths(setup));
         code = 3;
     }
+    if (!setup.work.empty()) {
+        std::error_code ignored;
+        fs::remove_all(setup.work, ignored);
+    }
     write_file(setup.out / "results.json", results_json(result, problem));
     write_file(setup.out / "report.html", html_report(result, problem));
     if (!problem.empty()) std::fprintf(stderr, "whitted grade: grader failure: %s\n", problem.c_str());
     print_table(result, setup.out);
+    // For the instructor only: results.json and report.html are the student's to see.
+    if (!result.fences.empty()) std::printf("student code ran in %s\n", result.fences.c_str());
     if (!options.quiet)
         std::fprintf(stderr, "grade: done in %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return code;
@@ -144,28 +151,28 @@ Command add_grade_command(CLI::App& app) {
     command->add_option("submission", options->submission, "A student tree, its labs/ folder, or a folder with the NN_*.cpp lab files")
         ->required()
         ->check(CLI::ExistingDirectory);
-    command->add_option("--out", options->out, "Folder for results.json, report.html and the build (default ./grading)");
+    command->add_option("--out", options->out, "Folder for results.json, report.html, the copied labs and each test's files (default ./grading)");
     command->add_option("--instructor-tree", options->instructor_tree, "The tree with solution/ and the tests (default: the one whitted was built from)")
         ->check(CLI::ExistingDirectory);
-    command->add_option("--build-cache", options->build_cache, "Reuse this build folder between submissions: only the student's files recompile");
-    CLI::Option* no_prebuilt = command->add_flag("--no-prebuilt", options->no_prebuilt,
-                                                 "Compile the framework, reference labs and lab tests for this grading instead of importing them");
-    command->add_option("--prebuilt", options->prebuilt,
-                        "The instructor build to import those from, brought up to date first (default: the one whitted was built in)")
-        ->check(CLI::ExistingDirectory)
-        ->excludes(no_prebuilt);
+    command->add_option("--instructor-build", options->instructor_build,
+                        "The Release build of the instructor tree whose checkers and grading kit are used, brought up to date "
+                        "first (default: the one whitted was built in)")
+        ->check(CLI::ExistingDirectory);
     command->add_option("--rubric", options->rubric, "Rubric file (default: <instructor tree>/tests/rubric.json)")->check(CLI::ExistingFile);
-    command->add_option("-j,--jobs", options->jobs, "Parallel compile jobs (default 2)")->check(CLI::Range(1, 64));
+    command->add_option("-j,--jobs", options->jobs, "Lab files compiled at once (default 2)")->check(CLI::Range(1, 64));
     command->add_option("--timeout", options->timeout, "Wall-clock seconds per test; CPU time may be twice that (default 20)")
         ->check(CLI::Range(0.5, 3600.0));
-    command->add_option("--memory", options->memory_mb, "Address space per test in MiB (default 2048)")->check(CLI::Range(64, 1 << 20));
+    command->add_option("--memory", options->memory_mb, "Address space of the student's code per test in MiB (default 2048)")->check(CLI::Range(64, 1 << 20));
     command->add_option("--max-processes", options->max_processes,
                         "RLIMIT_NPROC per test: the processes and threads of the tests' user in all (default: what it runs now "
                         "plus 256; a grader running as root runs the tests as user nobody)")
         ->check(CLI::Range(0L, 1L << 20));
     command->add_option("--sandbox", options->sandbox,
-                        "auto: bubblewrap when it works, else resource limits only; bubblewrap: fail without it; none: never")
+                        "auto: bubblewrap when it works, else other users and permissions (refused where they leave the answers readable); bubblewrap: fail without it; none: never")
         ->check(CLI::IsMember({"auto", "bubblewrap", "none"}));
+    command->add_flag("--allow-exposed-answers", options->allow_exposed_answers,
+                      "Grade even where the student's code could read the answers (no bubblewrap, and not root or the "
+                      "instructor files readable to user nobody); the grades can then be forged");
     command->add_flag("-q,--quiet", options->quiet, "Print only the table");
     return Command{command, [options] {
                        try {

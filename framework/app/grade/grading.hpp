@@ -22,15 +22,16 @@ struct GraderFailure : std::runtime_error {
 };
 
 struct GradingSetup {
-    std::filesystem::path instructor_tree; // absolute
-    std::filesystem::path submission_labs; // where the submission's lab files are
-    std::filesystem::path out;             // absolute; labs/ and tests/ are written here
-    std::filesystem::path build;           // absolute; out/build or a reused cache
-    std::filesystem::path prebuilt;        // absolute; the instructor build to import the shared parts from, or empty
+    std::filesystem::path instructor_tree;  // absolute
+    std::filesystem::path instructor_build; // absolute; its checkers and grading kit are used (brought up to date first)
+    std::filesystem::path submission_labs;  // where the submission's lab files are
+    std::filesystem::path out;              // absolute; labs/ and tests/ are written here
+    std::filesystem::path work;             // absolute; a new private folder for the kit and the workers (removed after)
     Rubric rubric;
     Limits test_limits;
     SandboxChoice sandbox = SandboxChoice::automatic;
-    long max_processes = 0; // RLIMIT_NPROC for the tests; 0: chosen by make_sandbox
+    bool allow_exposed_answers = false; // grade even where the student's code could read the answers
+    long max_processes = 0; // RLIMIT_NPROC for the student's code; 0: chosen by make_sandbox
     int jobs = 2;
     std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
@@ -49,7 +50,7 @@ struct GradingResult {
     std::vector<LabResult> labs;
     long score_cents = 0;
     long max_cents = 0;
-    std::string isolation; // which fences the tests ran behind (Sandbox::description)
+    std::string fences; // for the instructor only: which fences the student's code ran behind (Sandbox::description)
 };
 
 /// Grades the submission. Throws GraderFailure when the instructor tree does not configure or build.

@@ -109,7 +109,6 @@ std::string html_report(const GradingResult& result, const std::string& problem)
                 format_points(lab.max_cents) + "</td><td>" + escape(status_counts(lab)) + "</td></tr>\n";
     }
     html += "</table>\n";
-    if (!result.isolation.empty()) html += "<p>Tests ran in " + escape(result.isolation) + ".</p>\n";
     std::string notes;
     for (const LabResult& lab : result.labs)
         for (const std::string& note : lab.notes) notes += "<li>" + escape(lab.lab + ": " + note) + "</li>\n";

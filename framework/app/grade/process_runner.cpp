@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <dirent.h>
 #include <fcntl.h>
@@ -25,15 +26,19 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// name=value strings: the grader's environment with the spec's entries added or replaced.
+// name=value strings: the grader's environment (or a clean one) with the spec's entries added or replaced.
 std::vector<std::string> child_environment(const ProcessSpec& spec) {
     std::vector<std::string> result;
-    for (char** entry = environ; *entry; ++entry) {
-        const std::string text = *entry;
-        bool replaced = false;
-        for (const auto& [name, value] : spec.environment) replaced |= text.rfind(name + "=", 0) == 0;
-        if (!replaced) result.push_back(text);
+    if (spec.clean_environment) {
+        result = {"PATH=/usr/bin:/bin", "LC_ALL=C", "HOME=/nonexistent"};
+    } else {
+        for (char** entry = environ; *entry; ++entry) result.emplace_back(*entry);
     }
+    std::erase_if(result, [&](const std::string& text) {
+        for (const auto& [name, value] : spec.environment)
+            if (text.rfind(name + "=", 0) == 0) return true;
+        return false;
+    });
     for (const auto& [name, value] : spec.environment) result.push_back(name + "=" + value);
     return result;
 }
@@ -51,8 +56,16 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
 }
 
 // In the child, between fork and exec: only async-signal-safe calls.
-[[noreturn]] void become_child(const ProcessSpec& spec, char** argv, char** envp, int output_fd, int error_fd) {
+[[noreturn]] void become_child(const ProcessSpec& spec, char** argv, char** envp, int output_fd, int error_fd,
+                               const int* descriptors, std::size_t descriptor_count) {
     setpgid(0, 0);
+    // Out of the way of 3, 4, ... first: the pipes and the descriptors to hand on may be any of them.
+    output_fd = fcntl(output_fd, F_DUPFD_CLOEXEC, 100);
+    error_fd = fcntl(error_fd, F_DUPFD_CLOEXEC, 100);
+    int moved[16];
+    for (std::size_t i = 0; i < descriptor_count && i < 16; ++i) moved[i] = fcntl(descriptors[i], F_DUPFD_CLOEXEC, 100);
+    for (std::size_t i = 0; i < descriptor_count && i < 16; ++i)
+        if (moved[i] < 0 || dup2(moved[i], static_cast<int>(3 + i)) < 0) _exit(127); // dup2 clears close-on-exec
     const Limits& l = spec.limits;
     set_limit(RLIMIT_CORE, 0, 0);
     if (l.cpu_seconds > 0) {
@@ -92,94 +105,142 @@ void keep(ProcessRun& run, const char* data, std::size_t size, std::size_t limit
     if (size > room) run.output_truncated = true;
 }
 
-} // namespace
-
-ProcessRun run_process(const ProcessSpec& spec) {
+// One program of run_together, from fork to reaping.
+struct Running {
     ProcessRun run;
+    pid_t pid = -1;
+    int output_fd = -1;
+    int start_error_fd = -1;
+    Clock::time_point start, deadline;
+    bool reaped = false, timed_out = false;
+    int wait_status = 0;
+};
+
+Running start(const ProcessSpec& spec) {
+    Running r;
     std::vector<std::string> argv_strings = spec.argv;
     std::vector<std::string> env_strings = child_environment(spec);
     std::vector<char*> argv = c_strings(argv_strings);
     std::vector<char*> envp = c_strings(env_strings);
+    r.reaped = true;
     int output[2], start_error[2];
-    if (argv_strings.empty() || pipe2(output, O_CLOEXEC) != 0) {
-        run.start_error = "no program given or no pipe";
-        return run;
+    if (argv_strings.empty() || spec.descriptors.size() > 16 || pipe2(output, O_CLOEXEC) != 0) {
+        r.run.start_error = "no program given, too many descriptors or no pipe";
+        return r;
     }
     if (pipe2(start_error, O_CLOEXEC) != 0) {
         close(output[0]);
         close(output[1]);
-        run.start_error = std::strerror(errno);
-        return run;
+        r.run.start_error = std::strerror(errno);
+        return r;
     }
-    const Clock::time_point start = Clock::now();
+    r.start = Clock::now();
+    r.deadline = r.start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(spec.limits.wall_seconds));
     const pid_t pid = fork();
-    if (pid == 0) become_child(spec, argv.data(), envp.data(), output[1], start_error[1]);
+    if (pid == 0)
+        become_child(spec, argv.data(), envp.data(), output[1], start_error[1], spec.descriptors.data(), spec.descriptors.size());
     close(output[1]);
     close(start_error[1]);
     if (pid < 0) {
         close(output[0]);
         close(start_error[0]);
-        run.start_error = std::string("fork failed: ") + std::strerror(errno);
-        return run;
+        r.run.start_error = std::string("fork failed: ") + std::strerror(errno);
+        return r;
     }
     setpgid(pid, pid); // also done by the child; whichever runs first wins
+    r.pid = pid;
+    r.output_fd = output[0];
+    r.start_error_fd = start_error[0];
+    r.reaped = false;
+    return r;
+}
 
-    const Clock::time_point deadline = start + std::chrono::duration_cast<Clock::duration>(
-                                                   std::chrono::duration<double>(spec.limits.wall_seconds));
-    int output_fd = output[0];
-    bool reaped = false, timed_out = false;
-    int wait_status = 0;
-    rusage usage{};
+void finish(Running& r, const ProcessSpec& spec) {
+    if (r.pid < 0) return; // failed before fork: End::failed_to_start
+    kill(-r.pid, SIGKILL);
+    r.run.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
+    int exec_errno = 0;
+    if (read(r.start_error_fd, &exec_errno, sizeof exec_errno) == sizeof exec_errno) {
+        r.run.end = ProcessRun::End::failed_to_start;
+        r.run.start_error = spec.argv[0] + ": " + std::strerror(exec_errno);
+    } else if (r.timed_out) {
+        r.run.end = ProcessRun::End::timed_out;
+    } else if (WIFSIGNALED(r.wait_status)) {
+        r.run.end = ProcessRun::End::signalled;
+        r.run.signal = WTERMSIG(r.wait_status);
+    } else {
+        r.run.end = ProcessRun::End::exited;
+        r.run.exit_code = WEXITSTATUS(r.wait_status);
+    }
+    close(r.start_error_fd);
+}
+
+} // namespace
+
+std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs, double linger_seconds) {
+    std::vector<Running> running;
+    for (const ProcessSpec& spec : specs) running.push_back(start(spec));
+    std::optional<Clock::time_point> leader_end;
     char buffer[65536];
-    while (output_fd >= 0 || !reaped) {
+    for (;;) {
         const Clock::time_point now = Clock::now();
-        if (!reaped && !timed_out && now >= deadline) {
-            timed_out = true;
-            kill(-pid, SIGKILL);
+        std::vector<pollfd> polled;
+        bool active = false;
+        for (std::size_t i = 0; i < running.size(); ++i) {
+            Running& r = running[i];
+            if (!r.reaped && !r.timed_out && now >= r.deadline) {
+                r.timed_out = true;
+                kill(-r.pid, SIGKILL);
+            }
+            if (!r.reaped && i > 0 && linger_seconds >= 0 && leader_end &&
+                now >= *leader_end + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(linger_seconds))) {
+                r.run.outlived = true;
+                kill(-r.pid, SIGKILL);
+            }
+            if (r.output_fd >= 0 && (now >= r.deadline + std::chrono::seconds(1) || (r.reaped && r.run.outlived))) {
+                close(r.output_fd); // a process that left the group still holds the output open: stop listening
+                r.output_fd = -1;
+            }
+            rusage usage{};
+            if (!r.reaped && wait4(r.pid, &r.wait_status, WNOHANG, &usage) == r.pid) {
+                r.run.peak_rss_bytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024; // Linux counts kilobytes
+                r.reaped = true;
+                if (i == 0 && !leader_end) leader_end = now;
+                kill(-r.pid, SIGKILL); // whatever it left behind still holds the output open
+            }
+            if (r.output_fd >= 0) polled.push_back({r.output_fd, POLLIN, 0});
+            active |= r.output_fd >= 0 || !r.reaped;
         }
-        if (output_fd >= 0 && now >= deadline + std::chrono::seconds(1)) {
-            close(output_fd); // a process that left the group still holds the output open: stop listening
-            output_fd = -1;
-        }
-        if (!reaped && wait4(pid, &wait_status, WNOHANG, &usage) == pid) {
-            reaped = true;
-            run.peak_rss_bytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024; // Linux counts kilobytes
-            kill(-pid, SIGKILL); // whatever it left behind still holds the output open
-        }
-        if (output_fd < 0) {
-            if (!reaped) usleep(2000);
+        if (!active) break;
+        if (polled.empty()) {
+            usleep(2000);
             continue;
         }
-        pollfd poll_fd{output_fd, POLLIN, 0};
-        if (poll(&poll_fd, 1, 20) > 0) {
-            const ssize_t n = read(output_fd, buffer, sizeof buffer);
-            if (n > 0) {
-                keep(run, buffer, static_cast<std::size_t>(n), spec.limits.output_bytes);
-            } else if (n == 0 || (errno != EINTR && errno != EAGAIN)) {
-                close(output_fd);
-                output_fd = -1;
+        if (poll(polled.data(), polled.size(), 20) <= 0) continue;
+        for (const pollfd& p : polled) {
+            if (!p.revents) continue;
+            for (std::size_t i = 0; i < running.size(); ++i) {
+                Running& r = running[i];
+                if (r.output_fd != p.fd) continue;
+                const ssize_t n = read(r.output_fd, buffer, sizeof buffer);
+                if (n > 0) {
+                    keep(r.run, buffer, static_cast<std::size_t>(n), specs[i].limits.output_bytes);
+                } else if (n == 0 || (errno != EINTR && errno != EAGAIN)) {
+                    close(r.output_fd);
+                    r.output_fd = -1;
+                }
             }
         }
     }
-    kill(-pid, SIGKILL);
-    run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-
-    int exec_errno = 0;
-    if (read(start_error[0], &exec_errno, sizeof exec_errno) == sizeof exec_errno) {
-        run.end = ProcessRun::End::failed_to_start;
-        run.start_error = spec.argv[0] + ": " + std::strerror(exec_errno);
-    } else if (timed_out) {
-        run.end = ProcessRun::End::timed_out;
-    } else if (WIFSIGNALED(wait_status)) {
-        run.end = ProcessRun::End::signalled;
-        run.signal = WTERMSIG(wait_status);
-    } else {
-        run.end = ProcessRun::End::exited;
-        run.exit_code = WEXITSTATUS(wait_status);
+    std::vector<ProcessRun> runs;
+    for (std::size_t i = 0; i < running.size(); ++i) {
+        finish(running[i], specs[i]);
+        runs.push_back(std::move(running[i].run));
     }
-    close(start_error[0]);
-    return run;
+    return runs;
 }
+
+ProcessRun run_process(const ProcessSpec& spec) { return run_together({spec}, -1).front(); }
 
 void become_subreaper() { prctl(PR_SET_CHILD_SUBREAPER, 1); }
 

@@ -38,6 +38,8 @@ struct ProcessSpec {
     std::vector<std::pair<std::string, std::string>> environment; // added to (or replacing in) the grader's
     Limits limits;
     std::optional<Identity> identity; // switch to this user after the limits are set; empty: stay who we are
+    std::vector<int> descriptors;     // handed to the program as descriptors 3, 4, ... (the rest are closed on exec)
+    bool clean_environment = false;   // start from an empty environment (PATH=/usr/bin:/bin, LC_ALL=C), not the grader's
 };
 
 /// How a run ended. Core dumps are always off (RLIMIT_CORE = 0).
@@ -51,10 +53,17 @@ struct ProcessRun {
     double seconds = 0.0; // wall clock
     std::size_t peak_rss_bytes = 0; // the child's peak resident memory (wait4's ru_maxrss), once reaped
     std::string start_error; // for End::failed_to_start
+    bool outlived = false;   // killed because it went on after the first program of run_together ended
 };
 
 /// Runs the program and waits for it and everything it started (the process group).
 ProcessRun run_process(const ProcessSpec& spec);
+
+/// Runs the programs at once, each in its own process group under its own
+/// limits. Once the first has ended, the others get `linger_seconds` to end by
+/// themselves, then are killed (ProcessRun::outlived); with no first to follow
+/// (`linger_seconds` < 0) each simply runs to its end or its limits.
+std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs, double linger_seconds);
 
 /// Makes this process the reaper of every orphan among its descendants, so that
 /// a process that left its group (setsid) still ends up as our child.

@@ -54,7 +54,6 @@ std::string results_json(const GradingResult& result, const std::string& problem
     if (!problem.empty()) output = "The grader failed; this is not your fault. Please tell your instructor.\n" + problem + "\n";
     for (const LabResult& lab : result.labs) output += lab_summary_line(lab) + "\n";
     if (problem.empty()) output += "total: " + format_points(result.score_cents) + " / " + format_points(result.max_cents) + "\n";
-    if (!result.isolation.empty()) output += "tests ran in " + result.isolation + "\n";
     root["output"] = output;
     root["output_format"] = "text";
     root["visibility"] = "visible";

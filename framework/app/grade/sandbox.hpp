@@ -1,20 +1,23 @@
-// How far a submission's tests are fenced in, and the command line that does it.
+// How far the student's code is fenced in, and the command line that does it.
 //
-// Why: a test program runs the student's code. Limits and a process group of
-// its own (process_runner.hpp) stop it from crashing, stalling or flooding the
-// grader, but not from reading the solution, writing the instructor's files or
-// starting processes without end. Three more fences close those, each where
-// the machine allows it:
-//   - bubblewrap (Debian `bubblewrap`), when installed: a private view of the
-//     file system with only the system, the test program, the tests' scenes
-//     and reference images (read-only; the solution and the test sources are
-//     not there) and the test's own folder (writable); no network.
-//   - a grader running as root runs the tests as user nobody, so that
-//     RLIMIT_NPROC bounds their processes and the instructor's files are
-//     read-only to them; an ordinary user gets RLIMIT_NPROC over what it runs.
-//   - after each test, whatever it left running outside its process group is
+// Why: the student's code runs in two kinds of processes, the compiler (its
+// #include and asm(".incbin") read files) and the worker (the lab functions,
+// answering the checker). Limits and a process group of their own
+// (process_runner.hpp) stop them from crashing, stalling or flooding the
+// grader; these fences keep them from reading the answers (the solution, the
+// tests, the reference pictures, the checker and every program holding
+// reference code) and from touching anything of the grader's:
+//   - bubblewrap (Debian `bubblewrap`), where it can create namespaces: a
+//     private view of the file system with only the system folders and the
+//     paths a run is given (read-only, one writable folder at most), its own
+//     process ids (the checker is invisible), no network.
+//   - a grader running as root runs them as user nobody: the grader's files
+//     are then protected by their permissions, and RLIMIT_NPROC binds.
+//   - after each run, whatever it left running outside its process group is
 //     killed (the grader is a child subreaper).
-// The mode that ran is one line in results.json and report.html.
+// Without bubblewrap, the answers are safe only when user nobody cannot read
+// them; make_sandbox probes that, and a machine where the student's code could
+// read them grades only when the instructor allows it explicitly.
 #pragma once
 
 #include "grade/process_runner.hpp"
@@ -28,36 +31,34 @@ namespace whitted::grade {
 
 enum class SandboxChoice { automatic, bubblewrap, none };
 
-/// What the tests need to see: everything else is hidden inside bubblewrap.
-struct SandboxPaths {
-    std::filesystem::path instructor_tree; // its scenes/ and tests/ are shown read-only, minus the sources
-    std::filesystem::path programs;        // the folder of the test programs, shown read-only
-    std::filesystem::path out;             // the grading output; each test may write its own folder
-};
-
 struct Sandbox {
     bool bubblewrap = false;
-    std::optional<Identity> identity; // nobody, when the grader is root and nobody can reach the files
-    long processes = 0;               // RLIMIT_NPROC for the tests; 0: none (root without nobody)
-    std::vector<std::string> bwrap_prefix; // bwrap and its options up to the writable folder
-    std::string description;               // one line without paths: which fences are up
-    std::string unreachable;               // for the instructor: the path user nobody could not reach
+    std::optional<Identity> identity; // nobody, when the grader is root
+    long processes = 0;               // RLIMIT_NPROC for the student's code; 0: none
+    std::vector<std::string> bwrap_prefix; // bwrap and its options for the system folders
+    std::string description;               // one line for the instructor, without paths: which fences are up
+    std::string exposed;                   // for the instructor: what the student's code could read, or empty
     std::string bwrap_error;               // for the instructor: what bwrap said when it failed
 
-    /// The spec that runs `spec` inside the fences; `writable` is the only folder it may write.
-    ProcessSpec wrap(ProcessSpec spec, const std::filesystem::path& writable) const;
+    /// The spec that runs `spec` inside the fences, seeing `readable` (read-only) and `writable` (if given) besides the system.
+    ProcessSpec wrap(ProcessSpec spec, const std::vector<std::filesystem::path>& readable,
+                     const std::optional<std::filesystem::path>& writable) const;
 
-    /// How the wrapped program ended: bubblewrap reports a test killed by
+    /// How the wrapped program ended: bubblewrap reports a program killed by
     /// signal S as exit code 128 + S, which becomes the signal again.
     ProcessRun unwrap(ProcessRun run) const;
 };
 
-/// Works out which fences this machine allows. Throws GraderFailure when
-/// bubblewrap is asked for and does not work. `max_processes` > 0 overrides the
-/// process limit.
-Sandbox make_sandbox(SandboxChoice choice, const SandboxPaths& paths, long max_processes);
+/// Works out which fences this machine allows. `secrets` are files the
+/// student's code must not read (a sample of each kind: a solution file, a
+/// hidden test, the checker, the grader's own program); `scratch` is a folder
+/// of the grader's that the probes may run in. Throws std::runtime_error when
+/// bubblewrap is asked for and does not work, or when the answers would be
+/// readable and `allow_exposed` is false. `max_processes` > 0 overrides the process limit.
+Sandbox make_sandbox(SandboxChoice choice, const std::vector<std::filesystem::path>& secrets,
+                     const std::filesystem::path& scratch, long max_processes, bool allow_exposed);
 
-/// Hands a folder the grader made to the identity the tests run as, so that they can write in it.
+/// Hands a folder the grader made to the identity the student's code runs as, so that it can write in it.
 void give_folder(const Sandbox& sandbox, const std::filesystem::path& folder);
 
 } // namespace whitted::grade

@@ -1,20 +1,36 @@
 // Finding a submission's lab files and copying them where the grader builds them.
+//
+// Why: a submission is hostile input. A lab file may be a symbolic link (to
+// the solution, or to a secret the grader would copy and show), a FIFO that
+// blocks a reader for ever, a device without end, or huge. Only regular files
+// of a bounded size are copied, opened without following links or blocking;
+// anything else is refused with the reason, and the lab is graded as missing.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace whitted::grade {
 
-/// The folder holding the lab files: SUBMISSION/labs when it has any of them, else SUBMISSION.
+/// The largest lab file the grader copies.
+inline constexpr std::size_t kMaxLabFileBytes = 1 << 20;
+
+/// The folder holding the lab files: SUBMISSION/labs when it is a real folder
+/// (not a link) holding any of them, else SUBMISSION.
 std::filesystem::path find_lab_folder(const std::filesystem::path& submission, const std::vector<std::string>& labs);
 
 /// Copies <from>/<lab>.cpp for every lab into `to` (emptied first); a lab file
-/// that is not there is replaced by the untouched stub from `stubs`. Returns
-/// the labs that were missing.
-std::vector<std::string> copy_lab_files(const std::filesystem::path& from, const std::filesystem::path& stubs,
-                                        const std::filesystem::path& to, const std::vector<std::string>& labs);
+/// that is missing or refused is replaced by the untouched stub from `stubs`.
+/// Returns, for each such lab, why ("the submission has no labs/01_ray_casting.cpp").
+std::map<std::string, std::string> copy_lab_files(const std::filesystem::path& from, const std::filesystem::path& stubs,
+                                                  const std::filesystem::path& to, const std::vector<std::string>& labs);
+
+/// The content of a regular file that is not a link, at most `max_bytes` long,
+/// read without blocking; throws std::runtime_error saying what it is instead.
+std::string read_regular_file(const std::filesystem::path& file, std::size_t max_bytes);
 
 /// The lab names of a tree: the NN_name.cpp files in its labs/ folder, sorted.
 std::vector<std::string> lab_names(const std::filesystem::path& instructor_tree);

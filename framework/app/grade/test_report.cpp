@@ -131,6 +131,56 @@ void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& lim
     outcome.output = details;
 }
 
+void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const ProcessRun& worker, const Limits& limits,
+                   const std::filesystem::path& report_file) {
+    // What the checker said about the link, when it broke.
+    std::string link_problem;
+    for (const std::string& line : split_lines(checker.output))
+        if (line.rfind("grading link broken: ", 0) == 0) link_problem = line.substr(21);
+    if (checker.end == ProcessRun::End::timed_out || worker.end == ProcessRun::End::timed_out) {
+        outcome.status = Status::timeout;
+        outcome.message = describe(worker.end == ProcessRun::End::timed_out ? worker : checker, limits);
+    } else if (worker.end == ProcessRun::End::signalled && worker.signal == SIGXCPU) {
+        outcome.status = Status::timeout;
+        outcome.message = "used more than " + std::to_string(static_cast<long>(limits.cpu_seconds)) + " s of CPU time and was killed";
+    } else if (worker.outlived) {
+        outcome.status = Status::crash;
+        outcome.message = "your code went on running after the test was over (a thread or a process left behind?) and was killed";
+    } else if (worker.end == ProcessRun::End::signalled && worker.output.find(kNotImplemented) != std::string::npos) {
+        outcome.status = Status::not_implemented; // thrown where nothing caught it: std::terminate
+        outcome.message = not_implemented_line(worker.output);
+    } else if (worker.end == ProcessRun::End::signalled) {
+        outcome.status = Status::crash;
+        outcome.message = "your code was " + describe(worker, limits);
+    } else if (worker.end == ProcessRun::End::failed_to_start) {
+        outcome.status = Status::crash;
+        outcome.message = "your program " + describe(worker, limits);
+    } else if (worker.exit_code != 0 || (checker.end == ProcessRun::End::exited && checker.exit_code == 3)) {
+        outcome.status = Status::crash;
+        outcome.message = "your code ended the program (exit code " + std::to_string(worker.exit_code) + ") before the test was over";
+        if (worker.exit_code == 0 && !link_problem.empty() && link_problem.find("closed") == std::string::npos &&
+            link_problem.find("gone") == std::string::npos)
+            outcome.message = "the grading link broke: " + link_problem;
+    } else {
+        classify_run(outcome, checker, limits, report_file);
+        if (outcome.status == Status::passed && checker.exit_code != 0) {
+            outcome.status = Status::crash;
+            outcome.message = "the checker " + describe(checker, limits);
+        }
+        if (!worker.output.empty() || worker.output_truncated) {
+            outcome.output += "--- what your code printed ---\n" + worker.output;
+            if (worker.output_truncated) outcome.output += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
+        }
+        return;
+    }
+    std::string details = link_problem.empty() ? "" : "grading link: " + link_problem + "\n";
+    const std::optional<std::vector<std::string>> failures = recorded_failures(read_json(report_file), outcome.name);
+    if (failures)
+        for (const std::string& failure : *failures) details += failure + "\n";
+    details += "--- what your code printed ---\n" + worker.output;
+    if (worker.output_truncated) details += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
+    outcome.output = details;
+}
 
 std::optional<ImageNumbers> read_image_numbers(const std::filesystem::path& file) {
     const std::optional<json> value = read_json(file);

@@ -15,6 +15,13 @@ namespace whitted::grade {
 /// GoogleTest's JSON report; a test that never wrote it crashed.
 void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& limits, const std::filesystem::path& report_file);
 
+/// The same for a test run as a checker and a worker (test_runner.hpp): the
+/// worker's ending comes first (a crash, a timeout, code that went on running
+/// or exited early is never a pass, whatever the checker says), then the
+/// checker's verdict. The worker's output follows the details, marked as such.
+void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const ProcessRun& worker, const Limits& limits,
+                   const std::filesystem::path& report_file);
+
 /// Reads tests/support's image.json; empty if the file is missing or unreadable.
 std::optional<ImageNumbers> read_image_numbers(const std::filesystem::path& file);
 

@@ -2,33 +2,52 @@
 #include "grade/test_report.hpp"
 #include "grade/text.hpp"
 
+#include "channel.hpp"
+
+#include <unistd.h>
+
 namespace whitted::grade {
 
 std::string folder_name(const std::string& test_name) {
     std::string name = test_name;
     for (char& c : name)
-        if (c == '/' || c == '\\') c = '_';
+        if (c == '/' || c == '\\' || c == '\0') c = '_';
+    if (name.empty() || name == "." || name == "..") name = "_" + name;
     return name;
 }
 
 namespace {
 
-// Runs the program in the sandbox with `folder` (made anew) as its writable folder and working directory.
-ProcessRun run_fenced(const TestProgram& program, ProcessSpec spec, const std::filesystem::path& folder) {
-    std::filesystem::create_directories(folder);
-    give_folder(program.sandbox, folder);
+namespace fs = std::filesystem;
+
+// The descriptors of one channel, closed when the grader is done with them.
+struct ChannelHold {
+    link::ChannelPair pair = link::make_channel_pair();
+    ~ChannelHold() {
+        for (const link::ChannelFds* side : {&pair.checker, &pair.worker})
+            for (const int fd : {side->memory, side->wake_in, side->wake_out})
+                if (fd >= 0) close(fd);
+    }
+};
+
+ProcessSpec checker_spec(const TestProgram& program, std::vector<std::string> arguments, const fs::path& folder) {
+    arguments.insert(arguments.begin(), program.checker.string());
+    ProcessSpec spec;
+    spec.argv = std::move(arguments);
     spec.working_directory = folder;
-    const ProcessRun run = program.sandbox.unwrap(run_process(program.sandbox.wrap(std::move(spec), folder)));
-    kill_leftover_children();
-    return run;
+    spec.environment = {{"WHITTED_TEST_OUTPUT", folder.string()}, {"GTEST_COLOR", "no"}};
+    spec.limits = program.limits;
+    spec.limits.output_bytes = std::max<std::size_t>(spec.limits.output_bytes, 64 * 1024);
+    return spec;
 }
 
 } // namespace
 
 std::vector<std::string> list_tests(const TestProgram& program, std::string& problem) {
-    ProcessSpec spec{{program.program.string(), "--gtest_list_tests"}, {}, {}, program.limits, {}};
+    fs::create_directories(program.output);
+    ProcessSpec spec = checker_spec(program, {"--gtest_list_tests"}, program.output);
     spec.limits.output_bytes = 1 << 20;
-    const ProcessRun run = run_fenced(program, spec, program.output / "listing");
+    const ProcessRun run = run_process(spec);
     std::vector<std::string> names;
     if (run.end != ProcessRun::End::exited || run.exit_code != 0) {
         problem = "listing the tests: " + describe(run, spec.limits) + "\n" + trim_text(run.output, 20);
@@ -51,36 +70,46 @@ TestOutcome run_test(const TestProgram& program, const std::string& test_name) {
     TestOutcome outcome;
     outcome.lab = program.lab;
     outcome.name = test_name;
-    const std::filesystem::path folder = program.output / folder_name(test_name);
-    std::filesystem::remove_all(folder);
-    const std::filesystem::path report_file = folder / "gtest.json";
-    ProcessSpec spec{{program.program.string(), "--gtest_filter=" + test_name, "--gtest_color=no",
-                      "--gtest_output=json:" + report_file.string()},
-                     folder,
-                     {{"WHITTED_TEST_OUTPUT", folder.string()}, {"GTEST_COLOR", "no"}},
-                     program.limits,
-                     {}};
-    const ProcessRun run = run_fenced(program, spec, folder);
-    classify_run(outcome, run, program.limits, report_file);
+    const fs::path folder = program.output / folder_name(test_name);
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const fs::path report_file = folder / "gtest.json";
+    ProcessRun checker, worker;
+    {
+        const ChannelHold channel;
+        ProcessSpec check = checker_spec(program,
+                                         {"--worker-fds=3,4,5", "--gtest_filter=" + test_name, "--gtest_color=no",
+                                          "--gtest_output=json:" + report_file.string()},
+                                         folder);
+        check.descriptors = {channel.pair.checker.memory, channel.pair.checker.wake_in, channel.pair.checker.wake_out};
+        ProcessSpec work;
+        work.argv = program.worker;
+        work.working_directory = fs::path(program.worker.front()).parent_path();
+        work.limits = program.limits;
+        work.limits.file_size = 1; // the worker writes no file: what it has to say crosses the link
+        work.descriptors = {channel.pair.worker.memory, channel.pair.worker.wake_in, channel.pair.worker.wake_out};
+        work = program.sandbox.wrap(std::move(work), {fs::path(program.worker.front())}, std::nullopt);
+        std::vector<ProcessRun> runs = run_together({check, work}, program.linger_seconds);
+        checker = std::move(runs[0]);
+        worker = program.sandbox.unwrap(std::move(runs[1]));
+    }
+    kill_leftover_children();
+    classify_pair(outcome, checker, worker, program.limits, report_file);
     outcome.message = replace_paths(outcome.message, program.path_replacements);
     outcome.output = trim_text(replace_paths(outcome.output, program.path_replacements), 60);
     outcome.image = read_image_numbers(folder / "image.json");
-    if (std::filesystem::exists(folder / "reference.png") || std::filesystem::exists(folder / "yours.png"))
-        outcome.pictures = folder;
+    if (fs::exists(folder / "reference.png") || fs::exists(folder / "yours.png")) outcome.pictures = folder;
     return outcome;
 }
 
-std::filesystem::path fetch_reference_picture(const TestProgram& program, const std::string& test_name) {
-    const std::filesystem::path folder = program.output / folder_name(test_name);
-    std::filesystem::remove_all(folder);
-    run_fenced(program,
-               {{program.program.string(), "--gtest_filter=" + test_name},
-                folder,
-                {{"WHITTED_TEST_OUTPUT", folder.string()}, {"WHITTED_REFERENCE_ONLY", "1"}},
-                program.limits,
-                {}},
-               folder);
-    return std::filesystem::exists(folder / "reference.png") ? folder : std::filesystem::path();
+fs::path fetch_reference_picture(const TestProgram& program, const std::string& test_name) {
+    const fs::path folder = program.output / folder_name(test_name);
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    ProcessSpec spec = checker_spec(program, {"--gtest_filter=" + test_name}, folder);
+    spec.environment.emplace_back("WHITTED_REFERENCE_ONLY", "1");
+    run_process(spec);
+    return fs::exists(folder / "reference.png") ? folder : fs::path();
 }
 
 } // namespace whitted::grade

@@ -1,5 +1,12 @@
-// Runs the GoogleTest tests of one grading program, each in its own process,
-// and tells how each one ended (outcome.hpp).
+// Runs one GoogleTest test of a lab as two processes: the instructor's checker
+// (the test, the reference, the verdict) and the student's worker (the lab
+// code), joined by the grading link (framework/link/), and tells how it ended.
+//
+// Why two: a test program that links the student's code lets that code decide
+// its own grade (rewrite GoogleTest's report, register tests of its own, call
+// the reference linked beside it). Here the student's code only answers calls;
+// the checker, a program built from the instructor's tree alone that the
+// worker can neither read nor signal, writes the report the grader reads.
 #pragma once
 
 #include "grade/outcome.hpp"
@@ -14,27 +21,29 @@
 namespace whitted::grade {
 
 struct TestProgram {
-    std::string lab;                // the lab its tests belong to
-    std::filesystem::path program;  // grade_<lab>, absolute
-    std::filesystem::path output;   // test folders go in <output>/<test name>/
+    std::string lab;                    // the lab its tests belong to
+    std::filesystem::path checker;      // check_<lab>, from the instructor build, absolute
+    std::vector<std::string> worker;    // the student's worker and its arguments (run inside the sandbox)
+    std::filesystem::path output;       // test folders go in <output>/<test folder>/, written by the checker only
     Limits limits;
     std::vector<std::pair<std::string, std::string>> path_replacements; // absolute -> shown
-    Sandbox sandbox; // the fences every run of the program goes through
+    Sandbox sandbox; // the fences of the worker
+    double linger_seconds = 2.0; // how long the worker may take to end once the checker has
 };
 
-/// The test names ("Suite.Test") the program lists, in its order; empty when
+/// The test names ("Suite.Test") the checker lists, in its order; empty when
 /// listing failed, with the reason in `problem`.
 std::vector<std::string> list_tests(const TestProgram& program, std::string& problem);
 
-/// Runs one test in its own process group under the program's limits and
-/// sandbox, then kills whatever it left running.
+/// Runs one test: the checker with the test's folder, the worker in the sandbox,
+/// a new link between them; then kills whatever either left running.
 TestOutcome run_test(const TestProgram& program, const std::string& test_name);
 
-/// Asks an image test for its reference picture only (it does not render);
-/// returns the folder holding reference.png, or empty.
+/// Asks the checker alone for an image test's reference picture (nothing is
+/// rendered); returns the folder holding reference.png, or empty.
 std::filesystem::path fetch_reference_picture(const TestProgram& program, const std::string& test_name);
 
-/// The folder name for a test: its name with '/' (parameterised tests) as '_'.
+/// The folder name for a test: its name with '/' (parameterised tests) as '_', never "." or "..".
 std::string folder_name(const std::string& test_name);
 
 } // namespace whitted::grade

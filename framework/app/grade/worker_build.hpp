@@ -1,0 +1,40 @@
+// Building the student's workers from the grading kit, inside the fences.
+//
+// Why: compiling is running the student's code too: #include and
+// asm(".incbin") read any file the compiler can, and a file without end
+// (/dev/zero) or a template explosion can eat the machine. So the compiler
+// runs as the student code's user, in the sandbox, under limits, seeing the
+// system, the kit (public headers and the worker's parts, kit.hpp) and the
+// build folder, nothing else; the include path is the kit's alone.
+#pragma once
+
+#include "grade/builder.hpp"
+#include "grade/kit.hpp"
+#include "grade/sandbox.hpp"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace whitted::grade {
+
+struct WorkerBuild {
+    const WorkerKit& kit;       // staged
+    const Sandbox& sandbox;
+    std::filesystem::path folder; // writable by the student code's user; labs/<lab>.cpp are the sources
+    int jobs = 2;
+};
+
+/// Compiles labs/<lab>.cpp to <lab>.o for each lab, `jobs` at a time; returns each lab's step.
+std::map<std::string, BuildStep> compile_labs(const WorkerBuild& build, const std::vector<std::string>& labs);
+
+/// Links the worker `name` from the student's objects of `own_labs` and the kit's remote objects for the other labs.
+BuildStep link_worker(const WorkerBuild& build, const std::string& name, const std::vector<std::string>& own_labs,
+                      const std::vector<std::string>& all_labs);
+
+/// Copies the program the student's user built (`built`) to `destination`, which
+/// that user cannot change, reading it without following links or blocking.
+void take_program(const std::filesystem::path& built, const std::filesystem::path& destination);
+
+} // namespace whitted::grade
