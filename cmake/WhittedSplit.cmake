@@ -120,6 +120,19 @@ function(whitted_grading_kit)
   string(APPEND text "link $<JOIN:$<TARGET_PROPERTY:worker_01_ray_casting_stub,LINK_OPTIONS>,\nlink >\n")
   string(APPEND text "link -pthread\n")
   string(APPEND text "headers ${PROJECT_SOURCE_DIR}/framework/include/whitted\n")
+  # whitted/labs.hpp precompiled with the same compiler and arguments: a lab
+  # file that includes it first compiles in a quarter of the time.
+  set(pch_dir ${PROJECT_BINARY_DIR}/grading-kit-pch)
+  set(pch ${pch_dir}/labs.hpp.gch)
+  file(GLOB headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/framework/include/whitted/*.hpp)
+  file(WRITE ${pch_dir}/labs_pch.hpp "#include \"whitted/labs.hpp\"\n")
+  add_custom_command(OUTPUT ${pch}
+    COMMAND ${CMAKE_CXX_COMPILER} ${flags} $<TARGET_PROPERTY:${lab},COMPILE_OPTIONS>
+            "$<$<BOOL:$<TARGET_PROPERTY:${lab},COMPILE_DEFINITIONS>>:-D$<JOIN:$<TARGET_PROPERTY:${lab},COMPILE_DEFINITIONS>,;-D>>"
+            -I ${PROJECT_SOURCE_DIR}/framework/include -x c++-header ${pch_dir}/labs_pch.hpp -o ${pch}
+    DEPENDS ${headers} COMMENT "Precompiling whitted/labs.hpp for the grading kit" COMMAND_EXPAND_LISTS VERBATIM)
+  add_custom_target(grading_kit_pch DEPENDS ${pch})
+  string(APPEND text "precompiled ${pch}\n")
   string(APPEND text "main $<TARGET_OBJECTS:whitted_worker_main>\n")
   set(parts whitted_worker_main whitted_link whitted_framework)
   foreach(lab IN LISTS WHITTED_LABS)
@@ -132,5 +145,5 @@ function(whitted_grading_kit)
   string(APPEND text "library $<TARGET_FILE:whitted_link>\nlibrary $<TARGET_FILE:whitted_framework>\n")
   file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/grading-kit.txt CONTENT "${text}")
   add_custom_target(grading_parts)
-  add_dependencies(grading_parts ${parts} check_integration)
+  add_dependencies(grading_parts ${parts} check_integration grading_kit_pch)
 endfunction()

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # End-to-end check of `whitted grade` (CI, after `make test`). Grades:
-#   reference  the reference solution as a submission: full marks, three times
-#              with byte-identical results.json: cold (importing the shared
-#              parts from the instructor build), again with --build-cache, and
-#              with --no-prebuilt (everything compiled for this grading);
+#   reference  the reference solution as a submission: full marks, twice, with
+#              byte-identical results.json (once as a tree, once as its labs/);
 #   stubs      the untouched stubs: 0 points, every test not implemented or
 #              skipped for a failed prerequisite;
 #   broken     the reference with a compile error in lab 3, a segfault in lab 2
 #              and an endless loop in lab 5: those labs get their status, the
-#              other labs full marks, integration is skipped.
+#              other labs full marks, integration is skipped;
+#   budget     the reference with --budget 12: the tests not started in time
+#              are timeouts that say so, and results.json is still valid.
 # Every results.json must be valid Gradescope JSON; every report.html must be
 # self-contained, with pictures for every image test. Prints how long each
 # grading took; exits non-zero on any failure.
@@ -19,24 +19,19 @@ source scripts/lib/grading-checks.sh test-grader
 
 labs="01_ray_casting 02_shadows 03_blinn_phong 04_reflection 05_refraction 06_fresnel"
 
-# (a) The reference solution, as a student tree: cold, then again through a
-# build cache, then compiling everything (the fallback when the instructor
-# build cannot be imported from).
+# (a) The reference solution, as a student tree, then as its labs/ folder.
 mkdir -p "$work/reference-tree"
 cp -r solution "$work/reference-tree/labs"
-grade reference-cold "$work/reference-tree" 0 --build-cache "$work/cache"
-grade reference-cached "$work/reference-tree/labs" 0 --build-cache "$work/cache"
-grade reference-full "$work/reference-tree" 0 --no-prebuilt
-check reference-cold 'ok(results["score"] == 100, "score " + str(results["score"]) + ", expected 100")
+grade reference "$work/reference-tree" 0
+grade reference-again "$work/reference-tree/labs" 0
+check reference 'ok(results["score"] == 100, "score " + str(results["score"]) + ", expected 100")
 ok(all(t["status"] == "passed" for t in results["tests"]), "a test did not pass")'
-for again in reference-cached reference-full; do
-    same_results reference-cold "$again" "results.json is byte-identical for the same submission ($again)"
-done
+same_results reference reference-again "results.json is byte-identical for the same submission"
 
 # (b) The untouched stubs.
 mkdir -p "$work/stub-tree"
 cp -r labs "$work/stub-tree/labs"
-grade stubs "$work/stub-tree" 1 --build-cache "$work/cache"
+grade stubs "$work/stub-tree" 1
 check stubs 'ok(results["score"] == 0, "score " + str(results["score"]) + ", expected 0")
 for t in results["tests"]:
     s = t["extra_data"]["status"]
@@ -50,7 +45,7 @@ python3 scripts/lib/inject.py "$work/broken-labs" \
     02_shadows spawn_ray 'volatile int* nowhere = nullptr; *nowhere = 1;' \
     03_blinn_phong blinn_phong 'int oops = undeclared_variable;' \
     05_refraction refracted_direction 'for (volatile unsigned long spin = 0;; spin = spin + 1) {}'
-grade broken "$work/broken-labs" 1 --build-cache "$work/cache" --timeout 2
+grade broken "$work/broken-labs" 1 --timeout 2
 check broken 'for lab in ("01_ray_casting", "04_reflection", "06_fresnel"):
     ok(lab_score(lab) == lab_max(lab), lab + ": " + str(lab_score(lab)) + " of " + str(lab_max(lab)))
 ok(statuses("02_shadows") == {"crash", "skipped"}, "02_shadows: " + str(statuses("02_shadows")))
@@ -60,6 +55,11 @@ ok(statuses("integration") == {"skipped"}, "integration: " + str(statuses("integ
 ok(all(lab_score(lab) == 0 for lab in ("02_shadows", "03_blinn_phong", "05_refraction", "integration")), "points for a broken lab")
 ok(any("undeclared_variable" in t["output"] and "labs/03_blinn_phong.cpp:" in t["output"] for t in by_lab["03_blinn_phong"]), "no compiler error shown")
 ok(any("SIGSEGV" in t["output"] for t in by_lab["02_shadows"]), "no SIGSEGV shown")'
+
+# (d) A time budget that runs out: a valid results.json, the tests not run are timeouts that say why.
+grade budget "$work/reference-tree" 1 --budget 12
+check budget 'ok(0 < results["score"] < 100, "score " + str(results["score"]) + " with a budget of 12 s")
+ok(any("time budget of 12 s ran out" in t["output"] for t in results["tests"]), "no test says the budget ran out")'
 
 echo
 echo "grading times (2 jobs):"

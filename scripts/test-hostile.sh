@@ -1,25 +1,35 @@
 #!/usr/bin/env bash
-# The grader against hostile submissions (CI, after `make test`). Each lab of a
-# submission is the reference with one hostile line at the start of one of its
-# functions; every grading must end with a valid results.json, a clear status
-# per test, points only where earned, the instructor's files untouched and no
-# process left behind. Grades, sharing one build cache:
-#   reference   the reference solution, first and again at the end: 100 points
-#               and byte-identical results.json (a hostile submission cannot
-#               change how the next one is graded);
-#   hostile-a   abort, throw, sleep, allocate without end, flood the output,
-#               write a huge file; with --sandbox none (resource limits only);
-#   hostile-b   exit 0 early, NaN pixels, a fork bomb that also escapes its
-#               process group, reading the solution and the hidden tests,
-#               overwriting reference images, the rubric and results.json, an
-#               orphan left sleeping; with --sandbox bubblewrap (installed
-#               first when missing and possible).
+# The grader against hostile submissions (CI, after `make test`), written by a
+# student who has read the grader's source. Every grading must end with a
+# valid results.json, a clear status per test, points only where earned,
+# nothing secret in results.json or report.html, the instructor's files
+# untouched and no process left behind. Grades:
+#   reference     the reference solution, first and again at the end: 100
+#                 points, byte-identical results.json;
+#   refused       (root only) --sandbox none on a tree user nobody can read:
+#                 the grader refuses (exit 3) instead of exposing the answers;
+# then in each mode the machine allows, "sandbox" (bubblewrap) and "users"
+# (--sandbox none, as root, with the tree unreadable to user nobody):
+#   hostile-a     the reference with one hostile line per lab: abort, throw,
+#                 sleep, allocate without end, flood the output, a huge file;
+#   hostile-b     exit 0 early, NaN pixels, a fork bomb, reading the solution,
+#                 a hidden test, the checker and /etc/shadow, overwriting the
+#                 reference images, the rubric, results.json and the checker's
+#                 report, an orphan left sleeping;
+#   redteam       the untouched stubs with an attack per lab: including the
+#                 solution, forging the checker's report from its command
+#                 line, a main() of its own with fake tests, reading the
+#                 answers, asm(".incbin") of a secret, running the reference
+#                 renderer and the checker;
+# and once: files (lab files that are links to the solution and to a secret, a
+# FIFO, a folder, an oversized file, #include "/dev/zero") and a labs/ folder
+# that is a link to the solution.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if ! command -v bwrap > /dev/null; then bash scripts/install-deps.sh --sandbox || true; fi
 # shellcheck source=lib/grading-checks.sh
 source scripts/lib/grading-checks.sh test-hostile
-trap '[ -n "${KEEP_WORK:-}" ] || rm -rf "$work"; pkill -9 hostile- 2> /dev/null || true' EXIT
+trap 'cleanup; pkill -9 hostile- 2> /dev/null || true; rm -f /tmp/hostile-huge.bin' EXIT
 
 # The files a submission must not change: the tests, the solution, the instructor build's imported parts.
 protected_hash() {
@@ -46,96 +56,137 @@ ok(os.path.getsize(folder + "/results.json") < 2_000_000, "results.json is large
 ok(os.path.getsize(folder + "/report.html") < 20_000_000, "report.html is larger than 20 MB")
 def shown(lab, text): return any(text in t["output"] for t in by_lab[lab])
 def lost(lab): ok(lab_score(lab) < lab_max(lab), lab + ": full marks for a hostile lab")
-import glob
-def probes(lab): return "".join(open(p).read() for p in glob.glob(folder + "/tests/" + lab + "/*/hostile-probe.txt"))
 '
 
-grade reference-first "$tree/solution" 0 --build-cache "$work/cache"
+grade reference-first "$tree/solution" 0
 
-hostile hostile-a \
-    01_ray_casting primary_ray '#include <cstdlib> std::abort();' \
-    02_shadows spawn_ray '#include <stdexcept> throw std::runtime_error("hostile: thrown on purpose");' \
-    03_blinn_phong blinn_phong '#include <chrono> #include <thread> std::this_thread::sleep_for(std::chrono::hours(1));' \
-    04_reflection mirror_direction 'for (;;) { char* block = new char[1 << 26]; for (int i = 0; i < (1 << 26); i += 4096) block[i] = 1; }' \
-    05_refraction refracted_direction '#include <cstdio> for (;;) std::fputs("hostile: flooding the output with one line after another\n", stdout);' \
-    06_fresnel fresnel_reflectance '#include <cstdio> { static char block[1 << 20]; std::FILE* file = std::fopen("huge.bin", "wb"); for (;;) std::fwrite(block, 1, sizeof block, file); }'
-grade hostile-a "$work/hostile-a-labs" 1 --build-cache "$work/cache" --timeout 1 --sandbox none
-check hostile-a "$common"'
+tests_dir="$tree/tests" solution_dir="$tree/solution"
+checker="$tree/$build/tests/check_04_reflection"
+# Text that must never reach what the student sees.
+secrets='secret_texts = ["LEAKED", "FORGED", "RAN the reference", "OVERWROTE"] + [line for line in (open("/etc/shadow").read().splitlines()[:1] if os.access("/etc/shadow", os.R_OK) else []) if line]
+for text in secret_texts:
+    ok(text not in json.dumps(results) and text not in html, "a secret reached the student: " + text[:40])'
+
+# The two modes: bubblewrap where it works, and users and permissions as root.
+modes=()
+if bwrap --dev-bind / / true 2> /dev/null; then modes+=(sandbox); else echo "note: bubblewrap does not work here: no sandbox mode"; fi
+if [ "$(id -u)" -eq 0 ]; then
+    # Refused while user nobody can read the tree; graded once it cannot.
+    chmod o+rx "$tree"
+    if python3 -c 'import os, sys; os.setgid(65534); os.setuid(65534); sys.exit(0 if os.access(sys.argv[1], os.R_OK) else 1)' "$solution_dir/01_ray_casting.cpp"; then
+        grade refused "$tree/solution" 3 --sandbox none
+        if grep -q "cannot keep the answers from the student's code" "$work/refused/results.json"; then
+            echo "ok   refused: no grading where user nobody can read the answers"
+        else
+            echo "FAIL refused: graded with the answers readable"
+            failures=$((failures + 1))
+        fi
+    fi
+    chmod "$tree_mode" "$tree"
+    modes+=(users)
+else
+    echo "note: not root: no users mode (the student's code would run as the grader's own user)"
+fi
+
+for mode in "${modes[@]}"; do
+    options=()
+    if [ "$mode" = users ]; then
+        chmod o-rwx "$tree"
+        options+=(--sandbox none)
+    else
+        options+=(--sandbox bubblewrap)
+    fi
+    mode_line='ok(("sandbox mode" if "'"$mode"'" == "sandbox" else "users mode") in open(folder + ".log").read(), "the mode is not reported to the instructor")
+ok("mode:" not in json.dumps(results) and "mode:" not in html, "the mode line reached the student")'
+
+    hostile "hostile-a-$mode" \
+        01_ray_casting primary_ray '#include <cstdlib> std::abort();' \
+        02_shadows spawn_ray '#include <stdexcept> throw std::runtime_error("hostile: thrown on purpose");' \
+        03_blinn_phong blinn_phong '#include <chrono> #include <thread> std::this_thread::sleep_for(std::chrono::hours(1));' \
+        04_reflection mirror_direction 'for (;;) { char* block = new char[1 << 26]; for (int i = 0; i < (1 << 26); i += 4096) block[i] = 1; }' \
+        05_refraction refracted_direction '#include <cstdio> for (;;) std::fputs("hostile: flooding the output with one line after another\n", stdout);' \
+        06_fresnel fresnel_reflectance '#include <cstdio> { static char block[1 << 20]; std::FILE* file = std::fopen("/tmp/hostile-huge.bin", "wb"); if (!file) std::abort(); for (;;) std::fwrite(block, 1, sizeof block, file); }'
+    grade "hostile-a-$mode" "$work/hostile-a-$mode-labs" 1 "${options[@]}" --timeout 1
+    check "hostile-a-$mode" "$common$secrets
+$mode_line"'
 for lab in ("01_ray_casting", "02_shadows", "03_blinn_phong", "04_reflection", "05_refraction", "06_fresnel"): lost(lab)
 ok("crash" in statuses("01_ray_casting") and shown("01_ray_casting", "SIGABRT"), "abort: not a crash by SIGABRT")
 ok("exception" in statuses("02_shadows") and shown("02_shadows", "hostile: thrown on purpose"), "throw: not an exception")
 ok("timeout" in statuses("03_blinn_phong"), "sleep: no timeout")
 ok(statuses("04_reflection") & {"exception", "crash", "timeout"}, "allocation without end: " + str(statuses("04_reflection")))
 ok("timeout" in statuses("05_refraction") and shown("05_refraction", "more lines]"), "flood: no timeout or output not cut")
-ok("crash" in statuses("06_fresnel") and shown("06_fresnel", "SIGXFSZ"), "huge file: not stopped by SIGXFSZ")
-ok("rlimits mode" in results["output"], "the mode is not reported: " + results["output"])'
+ok("crash" in statuses("06_fresnel") and (shown("06_fresnel", "SIGXFSZ") or shown("06_fresnel", "SIGABRT")), "huge file: not stopped")'
 
-tests_dir="$tree/tests" solution_dir="$tree/solution" out_b="$work/hostile-b"
-# A fork bomb only where the grader can bound it: not root, or root with tests run as nobody.
-exposed=0
-bomb='#include <sys/prctl.h> #include <unistd.h> if (fork() == 0) { setsid(); prctl(PR_SET_NAME, "hostile-bomb"); for (;;) fork(); } for (;;) fork();'
-if [ "$(id -u)" -eq 0 ] && ! python3 -c 'import os, sys; os.setgid(65534); os.setuid(65534); sys.exit(0 if all(os.access(p, os.R_OK | os.X_OK) for p in sys.argv[1:]) else 1)' \
-        "$tree/tests" "$tree/$build/tests" "$work"; then
-    echo "note: user nobody cannot reach this tree, so tests would run as root without a process limit: no fork bomb"
-    bomb='for (;;) {}'
-    exposed=1
-fi
-# The sandbox where bwrap works here (not, for instance, inside a chroot, where it cannot pivot_root).
-sandbox=bubblewrap
-if ! command -v bwrap > /dev/null; then
-    sandbox=none
-    echo "note: bubblewrap is not installed: hostile-b runs without the sandbox"
-elif ! bwrap --dev-bind / / true 2> /dev/null; then
-    sandbox=none
-    echo "note: bubblewrap does not work on this machine: hostile-b runs without the sandbox"
-fi
-# Tests that run as root outside bubblewrap can write the instructor's files: there the grader
-# must notice and stop (exit 3), and that is checked apart, on copies put back afterwards.
-overwrite_targets='"'"$tests_dir"'/images/whitted_1980.png", "'"$tests_dir"'/rubric.json", "'"$out_b"'/results.json"'
-unprotected=0
-if [ "$exposed" = 1 ] && [ "$sandbox" = none ]; then
-    unprotected=1
-    overwrite_targets='"'"$out_b"'/results.json"'
-fi
-hostile hostile-b \
-    01_ray_casting primary_ray '#include <cstdlib> std::exit(0);' \
-    02_shadows lambert '#include <cmath> return Color(std::nan(""));' \
-    03_blinn_phong blinn_phong "$bomb" \
-    04_reflection reflection '#include <fstream> #include <string> static const bool tried = [] { for (const char* path : {"'"$solution_dir"'/04_reflection.cpp", "'"$tests_dir"'/hidden/04_reflection/hidden_reflection_test.cpp"}) { std::ifstream file(path); std::string line; std::ofstream probe("hostile-probe.txt", std::ios::app); if (std::getline(file, line)) probe << "LEAKED " << path << ": " << line << "\n"; else probe << "could not read " << path << "\n"; } return true; }(); (void)tried;' \
-    05_refraction refraction '#include <cstdio> #include <fstream> static const bool tried = [] { for (const char* path : {'"$overwrite_targets"'}) { std::FILE* file = std::fopen(path, "wb"); std::ofstream("hostile-probe.txt", std::ios::app) << (file ? "OVERWROTE " : "could not overwrite ") << path << "\n"; if (file) { std::fputs("hostile", file); std::fclose(file); } } return true; }(); (void)tried;' \
-    06_fresnel fresnel_blend '#include <sys/prctl.h> #include <unistd.h> static const bool left = [] { if (fork() == 0) { setsid(); prctl(PR_SET_NAME, "hostile-orphan"); sleep(3600); _exit(0); } return true; }(); (void)left;'
-grade hostile-b "$work/hostile-b-labs" 1 --build-cache "$work/cache" --timeout 1 --sandbox "$sandbox"
-check hostile-b "$common"'
+    out_b="$work/hostile-b-$mode"
+    bomb='#include <sys/prctl.h> #include <unistd.h> if (fork() == 0) { setsid(); prctl(PR_SET_NAME, "hostile-bomb"); for (;;) fork(); } for (;;) fork();'
+    read_secrets='#include <cstdio> #include <fstream> #include <string> static const bool tried = [] { for (const char* path : {"'"$solution_dir"'/04_reflection.cpp", "'"$tests_dir"'/hidden/04_reflection/hidden_reflection_test.cpp", "'"$checker"'", "'"$tests_dir"'/images/whitted_1980.png", "/etc/shadow"}) { std::ifstream file(path); std::string line; if (std::getline(file, line)) std::printf("LEAKED %s: %.40s\n", path, line.c_str()); else std::printf("could not read %s\n", path); } return true; }(); (void)tried;'
+    overwrite='#include <cstdio> static const bool tried = [] { for (const char* path : {"'"$tests_dir"'/images/whitted_1980.png", "'"$tests_dir"'/rubric.json", "'"$out_b"'/results.json", "'"$out_b"'/tests/05_refraction/Refraction.FollowsSnellsLaw/gtest.json"}) { std::FILE* file = std::fopen(path, "wb"); std::printf("%s a grader file\n", file ? "OVERWROTE" : "could not overwrite"); if (file) { std::fputs("hostile", file); std::fclose(file); } } return true; }(); (void)tried;'
+    hostile "hostile-b-$mode" \
+        01_ray_casting primary_ray '#include <cstdlib> std::exit(0);' \
+        02_shadows lambert '#include <cmath> return Color(std::nan(""));' \
+        03_blinn_phong blinn_phong "$bomb" \
+        04_reflection reflection "$read_secrets" \
+        05_refraction refraction "$overwrite" \
+        06_fresnel fresnel_blend '#include <sys/prctl.h> #include <unistd.h> static const bool left = [] { if (fork() == 0) { setsid(); prctl(PR_SET_NAME, "hostile-orphan"); sleep(3600); _exit(0); } return true; }(); (void)left;'
+    # Two seconds: lab 6's image test makes about 400,000 calls across the link.
+    grade "hostile-b-$mode" "$work/hostile-b-$mode-labs" 1 "${options[@]}" --timeout 2
+    check "hostile-b-$mode" "$common$secrets
+$mode_line"'
 for lab in ("01_ray_casting", "02_shadows", "03_blinn_phong"): lost(lab)
-ok("crash" in statuses("01_ray_casting") and shown("01_ray_casting", "exited with code 0 before reporting a result"), "early exit 0: not a crash")
+ok("crash" in statuses("01_ray_casting") and shown("01_ray_casting", "ended the program (exit code 0) before the test was over"), "early exit 0: not a crash")
 ok("failed" in statuses("02_shadows") and shown("02_shadows", "NaN"), "NaN pixels: not failed, or NaN not named")
 ok("timeout" in statuses("03_blinn_phong"), "fork bomb: no timeout: " + str(statuses("03_blinn_phong")))
 for lab in ("04_reflection", "05_refraction", "06_fresnel"):
     ok(lab_score(lab) == lab_max(lab), lab + ": correct code lost points: " + str(statuses(lab)))
-# Inside bubblewrap, writing where results.json would go "succeeds" in the private view of the sandbox:
-# what counts is the real file (valid, checked above) and the files of the instructor (hashed below).
-ok("could not overwrite" in probes("05_refraction") or "OVERWROTE" in probes("05_refraction"), "the overwriting test did not run")
-ok(open(folder + "/results.json").read(1) == "{", "results.json was overwritten")
-sandboxed = "sandbox mode" in results["output"]
-ok(sandboxed or "'"$sandbox"'" == "none", "bubblewrap was asked for and not used: " + results["output"])
-if sandboxed:
-    ok("LEAKED" not in probes("04_reflection"), "a test read the solution or a hidden test: " + probes("04_reflection")[:300])
-    ok("could not read" in probes("04_reflection"), "the reading test did not run")'
+ok(open(folder + "/results.json").read(1) == "{", "results.json was overwritten")'
 
-if [ "$unprotected" = 1 ]; then
-    mkdir -p "$work/backup"
-    cp tests/images/whitted_1980.png tests/rubric.json "$work/backup/"
-    out_b="$work/hostile-overwrite"
-    hostile hostile-overwrite 05_refraction refraction '#include <cstdio> static const bool tried = [] { for (const char* path : {"'"$tests_dir"'/images/whitted_1980.png", "'"$tests_dir"'/rubric.json"}) { if (std::FILE* file = std::fopen(path, "wb")) { std::fputs("hostile", file); std::fclose(file); } } return true; }(); (void)tried;'
-    grade hostile-overwrite "$work/hostile-overwrite-labs" 3 --build-cache "$work/cache" --timeout 1 --sandbox none
-    if grep -q "a file the grader relies on changed: tests/" "$work/hostile-overwrite/results.json"; then
-        echo "ok   unprotected tests overwrote the instructor's files: the grader noticed and stopped"
-    else
-        echo "FAIL unprotected tests overwrote the instructor's files and the grader did not stop"
-        failures=$((failures + 1))
-    fi
-    cp "$work/backup/whitted_1980.png" tests/images/ && cp "$work/backup/rubric.json" tests/
-fi
+    # The untouched stubs, each with an attack on the grader.
+    mkdir -p "$work/redteam-$mode-labs"
+    cp labs/*.cpp "$work/redteam-$mode-labs/"
+    forge='#include <cstdio> #include <dirent.h> #include <fstream> #include <string> static const bool forged = [] { DIR* proc = opendir("/proc"); int seen = 0; while (dirent* entry = proc ? readdir(proc) : nullptr) { std::ifstream file(std::string("/proc/") + entry->d_name + "/cmdline"); std::string text((std::istreambuf_iterator<char>(file)), {}); const std::size_t at = text.find("--gtest_output=json:"); if (at == std::string::npos) continue; ++seen; std::string path = text.substr(at + 20); path = path.substr(0, path.find(std::string(1, 0))); std::ofstream report(path); report << "{\"testsuites\": [{\"name\": \"ShadowFeelers\", \"testsuite\": [{\"name\": \"x\", \"failures\": []}]}]}"; std::printf(report ? "FORGED %s\n" : "could not forge %s\n", path.c_str()); } std::printf("checkers seen: %d\n", seen); return true; }(); (void)forged;'
+    python3 scripts/lib/inject.py "$work/redteam-$mode-labs" \
+        02_shadows spawn_ray "$forge" \
+        02_shadows is_lit "$overwrite" \
+        04_reflection mirror_direction "$read_secrets" \
+        06_fresnel fresnel_reflectance '#include <cstdio> #include <cstdlib> static const bool ran = [] { for (const char* command : {"'"$tree/$build"'/whitted render '"$tree"'/scenes/whitted_1980.p3f -o hostile-render.png", "'"$checker"' --gtest_list_tests"}) std::printf(std::system(command) == 0 ? "RAN the reference\n" : "could not run the reference\n"); return true; }(); (void)ran;'
+    printf '#include "../../solution/01_ray_casting.cpp"\n#include "%s/solution/01_ray_casting.cpp"\n' "$tree" | cat - labs/01_ray_casting.cpp > "$work/redteam-$mode-labs/01_ray_casting.cpp"
+    printf '#include <cstdio>\nint main() { std::puts("BlinnPhong.\\n  Fake"); return 0; }\n' >> "$work/redteam-$mode-labs/03_blinn_phong.cpp"
+    printf 'asm(".incbin \\"/etc/shadow\\"");\nasm(".incbin \\"%s/solution/05_refraction.cpp\\"");\n' "$tree" >> "$work/redteam-$mode-labs/05_refraction.cpp"
+    grade "redteam-$mode" "$work/redteam-$mode-labs" 1 "${options[@]}" --timeout 1
+    check "redteam-$mode" "$common$secrets
+$mode_line"'
+ok(results["score"] == 0, "points for stubs that attack: " + str(results["score"]))
+ok(statuses("01_ray_casting") == {"compile_error"}, "including the solution compiled: " + str(statuses("01_ray_casting")))
+ok(statuses("03_blinn_phong") == {"compile_error"}, "a main() of its own linked: " + str(statuses("03_blinn_phong")))
+ok(statuses("05_refraction") == {"compile_error"}, ".incbin of a secret compiled: " + str(statuses("05_refraction")))
+ok(shown("02_shadows", "checkers seen:"), "the forging attack did not run")
+ok(shown("02_shadows", "could not overwrite"), "the overwriting attack did not run")
+ok(shown("04_reflection", "could not read"), "the reading attack did not run")
+ok(shown("06_fresnel", "could not run"), "the running attack did not run")'
+    chmod "$tree_mode" "$tree"
+done
+
+# Files that are not lab files, and a labs/ folder that is a link to the solution.
+mkdir -p "$work/files-labs/05_refraction.cpp" "$work/linked-submission"
+printf '#include "/dev/zero"\n' > "$work/files-labs/01_ray_casting.cpp"
+mkfifo "$work/files-labs/02_shadows.cpp"
+ln -s "$solution_dir/03_blinn_phong.cpp" "$work/files-labs/03_blinn_phong.cpp"
+ln -s /etc/shadow "$work/files-labs/04_reflection.cpp"
+head -c 2000000 /dev/zero | tr '\0' ' ' > "$work/files-labs/06_fresnel.cpp"
+ln -s "$solution_dir" "$work/linked-submission/labs"
+file_options=(--timeout 1)
+[ "${#modes[@]}" -eq 0 ] && file_options+=(--allow-exposed-answers)
+[ "${modes[0]:-}" = users ] && chmod o-rwx "$tree" && file_options+=(--sandbox none)
+grade files "$work/files-labs" 1 "${file_options[@]}"
+check files "$common$secrets"'
+ok(results["score"] == 0, "points for files that are not lab files: " + str(results["score"]))
+ok(statuses("01_ray_casting") == {"compile_error"}, "#include \"/dev/zero\": " + str(statuses("01_ray_casting")))
+for lab, what in (("02_shadows", "not a regular file"), ("03_blinn_phong", "symbolic link"), ("04_reflection", "symbolic link"), ("05_refraction", "not a regular file"), ("06_fresnel", "larger than")):
+    ok(statuses(lab) == {"missing"} and shown(lab, what), lab + ": " + str(statuses(lab)) + ", expected missing: " + what)'
+grade linked-folder "$work/linked-submission" 1 "${file_options[@]}"
+check linked-folder "$common$secrets"'
+ok(results["score"] == 0, "points for a labs/ folder linked to the solution: " + str(results["score"]))'
+chmod "$tree_mode" "$tree"
 
 after=$(protected_hash)
 if [ "$before" = "$after" ]; then
@@ -153,7 +204,7 @@ else
     echo "ok   no process left behind"
 fi
 
-grade reference-again "$tree/solution" 0 --build-cache "$work/cache"
+grade reference-again "$tree/solution" 0
 check reference-again 'ok(results["score"] == 100, "score " + str(results["score"]) + ", expected 100")'
 same_results reference-first reference-again "the reference grades the same before and after the hostile submissions"
 

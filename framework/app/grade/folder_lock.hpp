@@ -3,7 +3,7 @@
 // Why: two graders may run at once (one per terminal, or a batch script and an
 // instructor), and CMake and the build tools do not expect two builds in one
 // folder at the same time. Each grader takes the lock of a folder it builds in:
-// its --build-cache, and the instructor build whose shared parts it imports.
+// the instructor build whose checkers and grading kit it brings up to date.
 #pragma once
 
 #include <filesystem>

@@ -32,6 +32,7 @@ struct GradeOptions {
     std::string rubric;
     int jobs = 2;
     double timeout = 20.0;
+    double budget = 1800.0;
     int memory_mb = 2048;
     long max_processes = 0;
     std::string sandbox = "auto";
@@ -105,6 +106,7 @@ int run_grade(const GradeOptions& options) {
     setup.test_limits.address_space = static_cast<std::size_t>(options.memory_mb) << 20;
     setup.test_limits.file_size = 64 << 20;
     setup.max_processes = options.max_processes;
+    setup.budget_seconds = options.budget;
     setup.sandbox = options.sandbox == "bubblewrap" ? SandboxChoice::bubblewrap
                     : options.sandbox == "none"     ? SandboxChoice::none
                                                     : SandboxChoice::automatic;
@@ -162,6 +164,10 @@ Command add_grade_command(CLI::App& app) {
     command->add_option("-j,--jobs", options->jobs, "Lab files compiled at once (default 2)")->check(CLI::Range(1, 64));
     command->add_option("--timeout", options->timeout, "Wall-clock seconds per test; CPU time may be twice that (default 20)")
         ->check(CLI::Range(0.5, 3600.0));
+    command->add_option("--budget", options->budget,
+                        "Wall-clock seconds for the whole grading: tests not started by then count as timed out, and "
+                        "results.json is still written (default 1800)")
+        ->check(CLI::Range(10.0, 86400.0));
     command->add_option("--memory", options->memory_mb, "Address space of the student's code per test in MiB (default 2048)")->check(CLI::Range(64, 1 << 20));
     command->add_option("--max-processes", options->max_processes,
                         "RLIMIT_NPROC per test: the processes and threads of the tests' user in all (default: what it runs now "

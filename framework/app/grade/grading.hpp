@@ -33,6 +33,7 @@ struct GradingSetup {
     bool allow_exposed_answers = false; // grade even where the student's code could read the answers
     long max_processes = 0; // RLIMIT_NPROC for the student's code; 0: chosen by make_sandbox
     int jobs = 2;
+    double budget_seconds = 1800; // the whole grading's wall clock: tests not started by then are not run (timeout)
     std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
 

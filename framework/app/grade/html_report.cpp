@@ -1,5 +1,6 @@
 #include "grade/html_report.hpp"
 #include "grade/results_json.hpp"
+#include "grade/submission.hpp"
 #include "grade/text.hpp"
 
 #include <array>
@@ -38,13 +39,16 @@ std::string base64(const std::string& bytes) {
     return out;
 }
 
-// <figure> with the picture inlined, or nothing when the file is not there.
+// <figure> with the picture inlined, or nothing when it is not there or not a
+// regular file of at most 16 MiB (read without following links or blocking).
 std::string figure(const std::filesystem::path& file, const std::string& caption) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return {};
-    std::stringstream bytes;
-    bytes << in.rdbuf();
-    return "<figure><img alt=\"" + caption + "\" src=\"data:image/png;base64," + base64(bytes.str()) +
+    std::string bytes;
+    try {
+        bytes = read_regular_file(file, std::size_t{16} << 20);
+    } catch (const std::exception&) {
+        return {};
+    }
+    return "<figure><img alt=\"" + caption + "\" src=\"data:image/png;base64," + base64(bytes) +
            "\"><figcaption>" + caption + "</figcaption></figure>";
 }
 

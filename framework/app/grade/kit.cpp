@@ -38,6 +38,8 @@ WorkerKit read_kit(const fs::path& file) {
             kit.compiler = existing(value);
         } else if (key == "headers") {
             kit.headers = existing(value);
+        } else if (key == "precompiled") {
+            kit.precompiled = existing(value);
         } else if (key == "main") {
             kit.main_object = existing(value);
         } else if (key == "library") {
@@ -65,6 +67,11 @@ WorkerKit stage_kit(const WorkerKit& kit, const fs::path& folder) {
         if (entry.is_regular_file() && entry.path().extension() == ".hpp")
             fs::copy_file(entry.path(), folder / "include" / "whitted" / entry.path().filename());
     staged.headers = folder / "include" / "whitted";
+    // GCC uses whitted/labs.hpp.gch in place of the header when it is valid for the compilation, else the header.
+    if (!kit.precompiled.empty()) {
+        staged.precompiled = staged.headers / "labs.hpp.gch";
+        fs::copy_file(kit.precompiled, staged.precompiled);
+    }
     auto copy = [&](const fs::path& from, const std::string& name) {
         const fs::path to = folder / "lib" / name;
         fs::copy_file(from, to, fs::copy_options::overwrite_existing);

@@ -21,6 +21,7 @@ struct WorkerKit {
     std::vector<std::string> compile_arguments; // flags and -D definitions; the include folder is added by the builder
     std::vector<std::string> link_arguments;
     std::filesystem::path headers;              // the folder whitted/ of public headers
+    std::filesystem::path precompiled;          // whitted/labs.hpp precompiled with the kit's arguments, or empty
     std::filesystem::path main_object;          // the worker's main()
     std::map<std::string, std::filesystem::path> remote_objects; // lab -> the object answering it over the link
     std::vector<std::filesystem::path> libraries; // in link order

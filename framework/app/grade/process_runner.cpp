@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <dirent.h>
 #include <fcntl.h>
@@ -116,7 +117,7 @@ struct Running {
     int wait_status = 0;
 };
 
-Running start(const ProcessSpec& spec) {
+Running start_child(const ProcessSpec& spec) {
     Running r;
     std::vector<std::string> argv_strings = spec.argv;
     std::vector<std::string> env_strings = child_environment(spec);
@@ -175,12 +176,17 @@ void finish(Running& r, const ProcessSpec& spec) {
     close(r.start_error_fd);
 }
 
-} // namespace
-
-std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs, double linger_seconds) {
+// Runs the programs at once; program i with a leader (leaders[i] >= 0) is killed
+// `linger_seconds` after its leader ended.
+std::vector<ProcessRun> run_all(const std::vector<ProcessSpec>& specs, const std::vector<int>& leaders, double linger_seconds) {
     std::vector<Running> running;
-    for (const ProcessSpec& spec : specs) running.push_back(start(spec));
-    std::optional<Clock::time_point> leader_end;
+    for (const ProcessSpec& spec : specs) running.push_back(start_child(spec));
+    // The grader's copies of the handed-over descriptors, closed once every program has started (they may share some).
+    std::set<int> handed;
+    for (const ProcessSpec& spec : specs) handed.insert(spec.descriptors.begin(), spec.descriptors.end());
+    for (const int fd : handed) close(fd);
+    std::vector<std::optional<Clock::time_point>> ended(specs.size());
+    const auto linger = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(linger_seconds));
     char buffer[65536];
     for (;;) {
         const Clock::time_point now = Clock::now();
@@ -192,8 +198,8 @@ std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs, doub
                 r.timed_out = true;
                 kill(-r.pid, SIGKILL);
             }
-            if (!r.reaped && i > 0 && linger_seconds >= 0 && leader_end &&
-                now >= *leader_end + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(linger_seconds))) {
+            if (!r.reaped && leaders[i] >= 0 && ended[static_cast<std::size_t>(leaders[i])] &&
+                now >= *ended[static_cast<std::size_t>(leaders[i])] + linger) {
                 r.run.outlived = true;
                 kill(-r.pid, SIGKILL);
             }
@@ -205,7 +211,7 @@ std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs, doub
             if (!r.reaped && wait4(r.pid, &r.wait_status, WNOHANG, &usage) == r.pid) {
                 r.run.peak_rss_bytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024; // Linux counts kilobytes
                 r.reaped = true;
-                if (i == 0 && !leader_end) leader_end = now;
+                ended[i] = now;
                 kill(-r.pid, SIGKILL); // whatever it left behind still holds the output open
             }
             if (r.output_fd >= 0) polled.push_back({r.output_fd, POLLIN, 0});
@@ -240,7 +246,27 @@ std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs, doub
     return runs;
 }
 
-ProcessRun run_process(const ProcessSpec& spec) { return run_together({spec}, -1).front(); }
+} // namespace
+
+std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs) {
+    return run_all(specs, std::vector<int>(specs.size(), -1), 0.0);
+}
+
+std::vector<std::pair<ProcessRun, ProcessRun>> run_pairs(const std::vector<ProcessPair>& pairs, double linger_seconds) {
+    std::vector<ProcessSpec> specs;
+    std::vector<int> leaders;
+    for (const ProcessPair& pair : pairs) {
+        leaders.insert(leaders.end(), {-1, static_cast<int>(specs.size())});
+        specs.push_back(pair.leader);
+        specs.push_back(pair.follower);
+    }
+    std::vector<ProcessRun> runs = run_all(specs, leaders, linger_seconds);
+    std::vector<std::pair<ProcessRun, ProcessRun>> result;
+    for (std::size_t i = 0; i < runs.size(); i += 2) result.emplace_back(std::move(runs[i]), std::move(runs[i + 1]));
+    return result;
+}
+
+ProcessRun run_process(const ProcessSpec& spec) { return run_together({spec}).front(); }
 
 void become_subreaper() { prctl(PR_SET_CHILD_SUBREAPER, 1); }
 
@@ -285,6 +311,21 @@ int kill_leftover_children() {
         for (const pid_t child : children) waitpid(child, nullptr, 0);
     }
     return killed;
+}
+
+void kill_user_processes(unsigned uid) {
+    const pid_t killer = fork();
+    if (killer == 0) {
+        // kill(-1) reaches every process the user may signal: all of its own, but never this one.
+        if (setgroups(0, nullptr) != 0 || setgid(uid) != 0 || setuid(uid) != 0) _exit(1);
+        // Rounds catch what forked since the last; zombies (not reaped yet) still count, so rounds are few.
+        for (int round = 0; round < 20; ++round) {
+            if (kill(-1, SIGKILL) != 0 && errno == ESRCH) _exit(0);
+            usleep(200);
+        }
+        _exit(0);
+    }
+    if (killer > 0) waitpid(killer, nullptr, 0);
 }
 
 long processes_of_user(unsigned uid) {

@@ -38,7 +38,7 @@ struct ProcessSpec {
     std::vector<std::pair<std::string, std::string>> environment; // added to (or replacing in) the grader's
     Limits limits;
     std::optional<Identity> identity; // switch to this user after the limits are set; empty: stay who we are
-    std::vector<int> descriptors;     // handed to the program as descriptors 3, 4, ... (the rest are closed on exec)
+    std::vector<int> descriptors;     // handed to the program as descriptors 3, 4, ...; the grader's copies are closed once it started
     bool clean_environment = false;   // start from an empty environment (PATH=/usr/bin:/bin, LC_ALL=C), not the grader's
 };
 
@@ -60,10 +60,18 @@ struct ProcessRun {
 ProcessRun run_process(const ProcessSpec& spec);
 
 /// Runs the programs at once, each in its own process group under its own
-/// limits. Once the first has ended, the others get `linger_seconds` to end by
-/// themselves, then are killed (ProcessRun::outlived); with no first to follow
-/// (`linger_seconds` < 0) each simply runs to its end or its limits.
-std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs, double linger_seconds);
+/// limits, each to its end or its limits.
+std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs);
+
+/// Two programs that work together: once the leader has ended, the follower
+/// has `linger_seconds` to end by itself, then is killed (ProcessRun::outlived).
+struct ProcessPair {
+    ProcessSpec leader;
+    ProcessSpec follower;
+};
+
+/// Runs every program of the pairs at once; returns (leader, follower) runs.
+std::vector<std::pair<ProcessRun, ProcessRun>> run_pairs(const std::vector<ProcessPair>& pairs, double linger_seconds);
 
 /// Makes this process the reaper of every orphan among its descendants, so that
 /// a process that left its group (setsid) still ends up as our child.
@@ -72,6 +80,11 @@ void become_subreaper();
 /// Kills and reaps every child of this process that is still alive: what a
 /// test left behind outside its process group. Returns how many it killed.
 int kill_leftover_children();
+
+/// Kills every process of the user `uid` (as that user: kill(-1) until none
+/// is left), for when the student's code runs as a user of its own: a fork
+/// bomb's processes leave their group faster than a scan of /proc finds them.
+void kill_user_processes(unsigned uid);
 
 /// The number of processes and threads the user owns now (what RLIMIT_NPROC counts).
 long processes_of_user(unsigned uid);

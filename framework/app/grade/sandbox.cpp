@@ -55,6 +55,11 @@ ProcessSpec Sandbox::wrap(ProcessSpec spec, const std::vector<fs::path>& readabl
     return spec;
 }
 
+void Sandbox::end_runs() const {
+    if (identity) kill_user_processes(identity->uid);
+    kill_leftover_children();
+}
+
 ProcessRun Sandbox::unwrap(ProcessRun run) const {
     if (bubblewrap && run.end == ProcessRun::End::exited && run.exit_code > 128 && run.exit_code < 128 + 65) {
         run.end = ProcessRun::End::signalled;

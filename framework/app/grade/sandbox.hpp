@@ -44,6 +44,10 @@ struct Sandbox {
     ProcessSpec wrap(ProcessSpec spec, const std::vector<std::filesystem::path>& readable,
                      const std::optional<std::filesystem::path>& writable) const;
 
+    /// After runs of the student's code: kills every process of its user (when
+    /// it has one of its own), then whatever is left among the grader's children.
+    void end_runs() const;
+
     /// How the wrapped program ended: bubblewrap reports a program killed by
     /// signal S as exit code 128 + S, which becomes the signal again.
     ProcessRun unwrap(ProcessRun run) const;

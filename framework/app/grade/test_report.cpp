@@ -1,4 +1,5 @@
 #include "grade/test_report.hpp"
+#include "grade/submission.hpp"
 #include "grade/text.hpp"
 
 #include <nlohmann/json.hpp>
@@ -15,10 +16,15 @@ using nlohmann::json;
 
 const std::string kNotImplemented = "is not implemented yet";
 
+// A JSON file the checker wrote, read as a regular file of at most 4 MiB without following links or blocking.
 std::optional<json> read_json(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in) return std::nullopt;
-    json value = json::parse(in, nullptr, false);
+    std::string text;
+    try {
+        text = read_regular_file(file, std::size_t{4} << 20);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    json value = json::parse(text, nullptr, false);
     if (value.is_discarded()) return std::nullopt;
     return value;
 }

@@ -12,11 +12,12 @@ namespace fs = std::filesystem;
 
 constexpr std::size_t kMaxProgramBytes = std::size_t{256} << 20;
 
-Limits compiler_limits() {
+Limits compiler_limits(const WorkerBuild& build) {
     Limits limits;
-    limits.wall_seconds = 120;
+    const double left = std::chrono::duration<double>(build.deadline - std::chrono::steady_clock::now()).count();
+    limits.wall_seconds = std::clamp(left, 0.5, 120.0);
     limits.cpu_seconds = 120;
-    limits.address_space = std::size_t{4} << 30;
+    limits.address_space = std::size_t{2} << 30;
     limits.file_size = std::size_t{128} << 20;
     limits.output_bytes = 64 * 1024;
     return limits;
@@ -27,7 +28,7 @@ ProcessSpec fenced(const WorkerBuild& build, std::vector<std::string> argv) {
     spec.argv = std::move(argv);
     spec.working_directory = build.folder;
     spec.environment = {{"TMPDIR", build.folder.string()}};
-    spec.limits = compiler_limits();
+    spec.limits = compiler_limits(build);
     return build.sandbox.wrap(std::move(spec), {build.kit.root}, build.folder);
 }
 
@@ -52,10 +53,10 @@ std::map<std::string, BuildStep> compile_labs(const WorkerBuild& build, const st
             argv.insert(argv.end(), {"-I", kit_include(build.kit).string(), "-c", "labs/" + labs[i] + ".cpp", "-o", labs[i] + ".o"});
             specs.push_back(fenced(build, std::move(argv)));
         }
-        const std::vector<ProcessRun> runs = run_together(specs, -1);
+        const std::vector<ProcessRun> runs = run_together(specs);
         for (std::size_t i = first; i < last; ++i)
             steps[labs[i]] = step_of(build.sandbox.unwrap(runs[i - first]), specs[i - first].limits);
-        kill_leftover_children();
+        build.sandbox.end_runs();
     }
     return steps;
 }
@@ -74,7 +75,7 @@ BuildStep link_worker(const WorkerBuild& build, const std::string& name, const s
     argv.insert(argv.end(), {"-o", name});
     const ProcessSpec spec = fenced(build, std::move(argv));
     const BuildStep step = step_of(build.sandbox.unwrap(run_process(spec)), spec.limits);
-    kill_leftover_children();
+    build.sandbox.end_runs();
     return step;
 }
 

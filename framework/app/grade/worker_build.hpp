@@ -12,6 +12,7 @@
 #include "grade/kit.hpp"
 #include "grade/sandbox.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -24,6 +25,7 @@ struct WorkerBuild {
     const Sandbox& sandbox;
     std::filesystem::path folder; // writable by the student code's user; labs/<lab>.cpp are the sources
     int jobs = 2;
+    std::chrono::steady_clock::time_point deadline; // the grading's budget: no step runs past it
 };
 
 /// Compiles labs/<lab>.cpp to <lab>.o for each lab, `jobs` at a time; returns each lab's step.
