@@ -1,6 +1,7 @@
-// Grading one submission, lab by lab in rubric order: build the lab's program,
-// list its tests, run each in its own process unless a prerequisite failed,
-// and score them with the rubric.
+// Grading one submission: build the student's workers from the grading kit,
+// then lab by lab in rubric order list the checker's tests, run each as a
+// checker and worker pair unless a prerequisite failed, and score them with
+// the rubric.
 #pragma once
 
 #include "grade/process_runner.hpp"
