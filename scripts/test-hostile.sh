@@ -6,14 +6,15 @@
 # untouched and no process left behind. Grades:
 #   reference     the reference solution, first and again at the end: 100
 #                 points, byte-identical results.json;
-#   refused       (root only) --sandbox none on a tree user nobody can read:
+#   refused       (root only) --sandbox none on a tree other users can read:
 #                 the grader refuses (exit 3) instead of exposing the answers;
 # then in each mode the machine allows, "sandbox" (bubblewrap) and "users"
-# (--sandbox none, as root, with the tree unreadable to user nobody):
+# (--sandbox none, as root, with the tree unreadable to other users):
 #   hostile-a     the reference with one hostile line per lab: abort, throw,
 #                 sleep, allocate without end, flood the output, a huge file;
 #   hostile-b     exit 0 early, NaN pixels, a fork bomb, reading the solution,
-#                 a hidden test, the checker and /etc/shadow, overwriting the
+#                 a hidden test, the checker, /etc/shadow and the output of an
+#                 earlier grading of the solution, overwriting the
 #                 reference images, the rubric, results.json and the checker's
 #                 report, an orphan left sleeping;
 #   redteam       the untouched stubs with an attack per lab: including the
@@ -71,12 +72,12 @@ for text in secret_texts:
 modes=()
 if bwrap --dev-bind / / true 2> /dev/null; then modes+=(sandbox); else echo "note: bubblewrap does not work here: no sandbox mode"; fi
 if [ "$(id -u)" -eq 0 ]; then
-    # Refused while user nobody can read the tree; graded once it cannot.
+    # Refused while other users (nobody) can read the tree; graded once it cannot.
     chmod o+rx "$tree"
     if python3 -c 'import os, sys; os.setgid(65534); os.setuid(65534); sys.exit(0 if os.access(sys.argv[1], os.R_OK) else 1)' "$solution_dir/01_ray_casting.cpp"; then
         grade refused "$tree/solution" 3 --sandbox none
         if grep -q "cannot keep the answers from the student's code" "$work/refused/results.json"; then
-            echo "ok   refused: no grading where user nobody can read the answers"
+            echo "ok   refused: no grading where other users can read the answers"
         else
             echo "FAIL refused: graded with the answers readable"
             failures=$((failures + 1))
@@ -119,7 +120,7 @@ ok("crash" in statuses("06_fresnel") and (shown("06_fresnel", "SIGXFSZ") or show
 
     out_b="$work/hostile-b-$mode"
     bomb='#include <sys/prctl.h> #include <unistd.h> if (fork() == 0) { setsid(); prctl(PR_SET_NAME, "hostile-bomb"); for (;;) fork(); } for (;;) fork();'
-    read_secrets='#include <cstdio> #include <fstream> #include <string> static const bool tried = [] { for (const char* path : {"'"$solution_dir"'/04_reflection.cpp", "'"$tests_dir"'/hidden/04_reflection/hidden_reflection_test.cpp", "'"$checker"'", "'"$tests_dir"'/images/whitted_1980.png", "/etc/shadow"}) { std::ifstream file(path); std::string line; if (std::getline(file, line)) std::printf("LEAKED %s: %.40s\n", path, line.c_str()); else std::printf("could not read %s\n", path); } return true; }(); (void)tried;'
+    read_secrets='#include <cstdio> #include <fstream> #include <string> static const bool tried = [] { for (const char* path : {"'"$solution_dir"'/04_reflection.cpp", "'"$tests_dir"'/hidden/04_reflection/hidden_reflection_test.cpp", "'"$checker"'", "'"$tests_dir"'/images/whitted_1980.png", "/etc/shadow", "'"$work"'/reference-first/labs/04_reflection.cpp", "'"$work"'/reference-first/report.html"}) { std::ifstream file(path); std::string line; if (std::getline(file, line)) std::printf("LEAKED %s: %.40s\n", path, line.c_str()); else std::printf("could not read %s\n", path); } return true; }(); (void)tried;'
     overwrite='#include <cstdio> static const bool tried = [] { for (const char* path : {"'"$tests_dir"'/images/whitted_1980.png", "'"$tests_dir"'/rubric.json", "'"$out_b"'/results.json", "'"$out_b"'/tests/05_refraction/Refraction.FollowsSnellsLaw/gtest.json"}) { std::FILE* file = std::fopen(path, "wb"); std::printf("%s a grader file\n", file ? "OVERWROTE" : "could not overwrite"); if (file) { std::fputs("hostile", file); std::fclose(file); } } return true; }(); (void)tried;'
     hostile "hostile-b-$mode" \
         01_ray_casting primary_ray '#include <cstdlib> std::exit(0);' \

@@ -21,13 +21,13 @@ cleanup() {
 trap cleanup EXIT
 
 # Where bubblewrap cannot run, the grader refuses to grade unless the student's
-# code cannot read the answers: as root, make the tree unreadable to user nobody
+# code cannot read the answers: as root, make the tree unreadable to other users
 # (restored at exit); as another user, nothing protects them, so say so.
 fence_options=()
 if ! bwrap --dev-bind / / true 2> /dev/null; then
     if [ "$(id -u)" -eq 0 ]; then
         chmod o-rwx "$tree"
-        echo "note: bubblewrap does not work here: the tree is made unreadable to user nobody while grading"
+        echo "note: bubblewrap does not work here: the tree is made unreadable to other users while grading"
     else
         fence_options=(--allow-exposed-answers)
         echo "note: bubblewrap does not work here and the grader is not root: grading with --allow-exposed-answers"
@@ -88,6 +88,9 @@ for test in results["tests"]:
     if not test.get("extra_data", {}).get("image"): continue
     card = cards.get(test["number"], "")
     pictures = card.count("<img")
+    if test["visibility"] == "hidden":
+        if pictures: problems.append(f"{test['name']}: a hidden test shows {pictures} pictures in report.html")
+        continue
     wanted = 4 if test["extra_data"]["status"] in ("passed", "failed") else 1
     if pictures < wanted: problems.append(f"{test['name']}: {pictures} pictures in report.html, expected {wanted}")
 by_lab = {}

@@ -7,6 +7,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
 using namespace whitted::grade;
 
 namespace {
@@ -65,6 +69,22 @@ TEST(HtmlReport, ListsFailuresFirstAndLoadsNothingFromOutside) {
     EXPECT_LT(html.find("HiddenShading.Lambert"), html.find("SpawnRay.Grazing"));
     EXPECT_EQ(html.find("http"), std::string::npos);
     EXPECT_NE(html.find("3.33 / 5.00"), std::string::npos);
+}
+
+// A hidden test's pictures would show the student its secret scene and reference.
+TEST(HtmlReport, ShowsNoPictureOfAHiddenTest) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("reports_test_" + std::to_string(getpid()));
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "yours.png") << "not really a PNG";
+    GradingResult result = sample();
+    result.labs[0].tests[0].outcome.pictures = folder;
+    result.labs[0].tests[1].outcome.pictures = folder;
+    const std::string html = html_report(result);
+    std::filesystem::remove_all(folder);
+    std::size_t pictures = 0;
+    for (std::size_t at = html.find("<img"); at != std::string::npos; at = html.find("<img", at + 1)) ++pictures;
+    EXPECT_EQ(pictures, 1u) << "only the visible test's yours.png";
+    EXPECT_NE(html.find("The pictures of hidden tests are not shown."), std::string::npos);
 }
 
 TEST(Text, PathsBecomeRelativeLongestFirst) {

@@ -98,6 +98,8 @@ int run_grade(const GradeOptions& options) {
     setup.instructor_build = fs::weakly_canonical(fs::absolute(options.instructor_build));
     check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs, setup.instructor_tree, setup.instructor_build});
     fs::create_directories(setup.out);
+    // The grader's user alone: the copied labs and the report of an earlier grading (of the solution, say) are answers.
+    fs::permissions(setup.out, fs::perms::owner_all);
     write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/ and tests/ here\n");
     fs::remove_all(setup.out / "build"); // left by graders before the checker/worker split
     setup.allow_exposed_answers = options.allow_exposed_answers;
@@ -171,14 +173,14 @@ Command add_grade_command(CLI::App& app) {
     command->add_option("--memory", options->memory_mb, "Address space of the student's code per test in MiB (default 2048)")->check(CLI::Range(64, 1 << 20));
     command->add_option("--max-processes", options->max_processes,
                         "RLIMIT_NPROC per test: the processes and threads of the tests' user in all (default: what it runs now "
-                        "plus 256; a grader running as root runs the tests as user nobody)")
+                        "plus 256; a grader running as root runs them as a user id of its own)")
         ->check(CLI::Range(0L, 1L << 20));
     command->add_option("--sandbox", options->sandbox,
                         "auto: bubblewrap when it works, else other users and permissions (refused where they leave the answers readable); bubblewrap: fail without it; none: never")
         ->check(CLI::IsMember({"auto", "bubblewrap", "none"}));
     command->add_flag("--allow-exposed-answers", options->allow_exposed_answers,
                       "Grade even where the student's code could read the answers (no bubblewrap, and not root or the "
-                      "instructor files readable to user nobody); the grades can then be forged");
+                      "instructor files readable to other users); the grades can then be forged");
     command->add_flag("-q,--quiet", options->quiet, "Print only the table");
     return Command{command, [options] {
                        try {

@@ -33,7 +33,7 @@ FileRecord relied_on_files(const GradingSetup& setup, const WorkerKit& kit) {
 // Files the student's code must not read, one of each kind; the probe of make_sandbox tries them.
 std::vector<fs::path> secrets(const GradingSetup& setup, const WorkerKit& kit) {
     std::vector<fs::path> files = {setup.instructor_tree / "solution" / "01_ray_casting.cpp", setup.instructor_tree / "tests" / "rubric.json",
-                                   setup.out / "tests", fs::read_symlink("/proc/self/exe")};
+                                   setup.out, setup.out / "tests", fs::read_symlink("/proc/self/exe")};
     for (const fs::directory_entry& entry : fs::recursive_directory_iterator(setup.instructor_tree / "tests" / "hidden"))
         if (entry.is_regular_file()) {
             files.push_back(entry.path());

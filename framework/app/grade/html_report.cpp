@@ -89,7 +89,10 @@ std::string test_card(const LabResult& lab, const ScoredTest& test, const std::s
                        escape(lab.title) + (is_hidden(o.name) ? " &middot; <i>hidden test</i>" : "") + "\n";
     if (!o.message.empty()) html += "<p>" + escape(o.message) + "</p>\n";
     if (o.image) html += "<p>" + escape(image_summary(*o.image)) + "</p>\n";
-    if (!o.pictures.empty()) {
+    // A hidden test's pictures would show its scene and its reference: the student sees this page.
+    if (!o.pictures.empty() && is_hidden(o.name)) {
+        html += "<p>The pictures of hidden tests are not shown.</p>\n";
+    } else if (!o.pictures.empty()) {
         html += "<div>" + figure(o.pictures / "yours.png", "yours") + figure(o.pictures / "reference.png", "reference") +
                 figure(o.pictures / "diff.png", "difference &times;16") + figure(o.pictures / "heat.png", "heat map") + "</div>\n";
     }

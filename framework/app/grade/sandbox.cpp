@@ -25,6 +25,16 @@ std::string first_readable(const std::vector<fs::path>& paths, const std::option
     return run.output.empty() ? "(the probe " + describe(run, probe.limits) + ")" : run.output;
 }
 
+// A user and group id of this grading's own: no account has it and no process
+// runs as it, so that killing all of its processes after a run (end_runs)
+// touches neither another grading's nor a service's, and its files are
+// protected from them by the permissions of "others".
+Identity fresh_identity() {
+    unsigned uid = 200000 + static_cast<unsigned>(getpid()) % 100000;
+    while (processes_of_user(uid) > 0) uid = 200000 + (uid - 200000 + 7919) % 100000;
+    return Identity{uid, uid};
+}
+
 // bwrap's options for the system folders: bound read-only, or re-created as the symbolic links they are.
 void add_system_folders(std::vector<std::string>& options) {
     for (const char* folder : {"/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32", "/etc"}) {
@@ -77,8 +87,8 @@ Sandbox make_sandbox(SandboxChoice choice, const std::vector<fs::path>& secrets,
     std::vector<std::string> missing;
     const bool root = geteuid() == 0;
     if (root) {
-        sandbox.identity = Identity{};
-        fences.push_back("student code runs as user nobody");
+        sandbox.identity = fresh_identity();
+        fences.push_back("student code runs as a user of its own");
     }
     const unsigned uid = sandbox.identity ? sandbox.identity->uid : getuid();
     if (max_processes > 0) sandbox.processes = max_processes;
@@ -116,7 +126,7 @@ Sandbox make_sandbox(SandboxChoice choice, const std::vector<fs::path>& secrets,
     if (!sandbox.bubblewrap) {
         if (!sandbox.identity) sandbox.exposed = "student code runs as the grader's own user, which can read every answer";
         else if (const std::string readable = first_readable(secrets, sandbox.identity, scratch); !readable.empty())
-            sandbox.exposed = "user nobody can read " + readable;
+            sandbox.exposed = "other users can read " + readable;
         if (!sandbox.exposed.empty()) {
             if (!allow_exposed)
                 throw std::runtime_error("this machine cannot keep the answers from the student's code: " + sandbox.exposed +
@@ -125,7 +135,7 @@ Sandbox make_sandbox(SandboxChoice choice, const std::vector<fs::path>& secrets,
                                          "(docs/grading.md, \"Fences\")");
             missing.push_back("ANSWERS EXPOSED (--allow-exposed-answers): " + sandbox.exposed);
         } else {
-            fences.push_back("the answers unreadable to user nobody (probed)");
+            fences.push_back("the answers unreadable to other users (probed)");
         }
     }
     std::string text = std::string(sandbox.bubblewrap ? "sandbox" : sandbox.exposed.empty() ? "users" : "exposed") + " mode: ";

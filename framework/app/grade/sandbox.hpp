@@ -11,12 +11,14 @@
 //     private view of the file system with only the system folders and the
 //     paths a run is given (read-only, one writable folder at most), its own
 //     process ids (the checker is invisible), no network.
-//   - a grader running as root runs them as user nobody: the grader's files
-//     are then protected by their permissions, and RLIMIT_NPROC binds.
+//   - a grader running as root runs them as a user id of the grading's own
+//     (no account, no other process has it): the grader's files are then
+//     protected by their permissions, RLIMIT_NPROC binds, and every process of
+//     that user can be killed after each run without touching anyone else's.
 //   - after each run, whatever it left running outside its process group is
 //     killed (the grader is a child subreaper).
-// Without bubblewrap, the answers are safe only when user nobody cannot read
-// them; make_sandbox probes that, and a machine where the student's code could
+// Without bubblewrap, the answers are safe only when other users cannot read
+// them; make_sandbox probes that as the student code's user, and a machine where the student's code could
 // read them grades only when the instructor allows it explicitly.
 #pragma once
 
@@ -33,7 +35,7 @@ enum class SandboxChoice { automatic, bubblewrap, none };
 
 struct Sandbox {
     bool bubblewrap = false;
-    std::optional<Identity> identity; // nobody, when the grader is root
+    std::optional<Identity> identity; // a user id of the grading's own, when the grader is root
     long processes = 0;               // RLIMIT_NPROC for the student's code; 0: none
     std::vector<std::string> bwrap_prefix; // bwrap and its options for the system folders
     std::string description;               // one line for the instructor, without paths: which fences are up
