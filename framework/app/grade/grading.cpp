@@ -25,8 +25,8 @@ FileRecord relied_on_files(const GradingSetup& setup, const WorkerKit& kit) {
     const fs::path& tree = setup.instructor_tree;
     FileRecord record = FileRecord::of({tree / "tests", tree / "solution", tree / "scenes", tree / "labs", tree / "framework", tree / "cmake"});
     std::vector<fs::path> checkers;
-    for (const auto& [lab, checker] : kit.checkers) checkers.push_back(checker.parent_path());
-    record.add(FileRecord::of(checkers, {""}));
+    for (const auto& [lab, checker] : kit.checkers) checkers.push_back(checker);
+    record.add(FileRecord::of(checkers));
     return record;
 }
 
@@ -139,42 +139,32 @@ public:
             const bool image = (rule && rule->image) || outcome.image || !outcome.pictures.empty();
             result.tests[t] = ScoredTest{std::move(outcome), rule ? rule->id : "", plan.max_cents[t], points, image};
         };
-        // Grades the tests (indices), one pair at a time: a checker and its worker each want a core, and
-        // two pairs at once on two cores took longer than one after the other (27 s against 21 s for the reference).
-        auto grade_tests = [&](const std::vector<std::size_t>& tests, const std::optional<std::string>& reason) {
+        // Grades one test, or says why it is not run. One pair at a time: a checker and its worker each want a
+        // core, and two pairs at once on two cores took longer than one after the other (27 s against 21 s).
+        auto grade_test = [&](std::size_t t, const std::optional<std::string>& reason) {
             // The whole renderer's tests are skipped for a failed prerequisite before its worker's build is blamed.
             const std::optional<LabFailure> failure = reason && !is_lab(lab.lab) ? std::nullopt : lab_failure;
-            const std::size_t at_once = 1;
-            for (std::size_t first = 0; first < tests.size(); first += at_once) {
-                std::vector<std::string> batch;
-                for (std::size_t i = first; i < std::min(tests.size(), first + at_once); ++i) batch.push_back(names[tests[i]]);
-                std::vector<TestOutcome> outcomes;
-                const double left = seconds_left();
-                if (reason || failure) {
-                    for (const std::string& name : batch) outcomes.push_back(not_run(lab.lab, name, failure, reason));
-                } else if (left < 0.5) {
-                    for (const std::string& name : batch) outcomes.push_back(out_of_budget(lab.lab, name));
-                } else {
-                    program.limits.wall_seconds = std::min(setup_.test_limits.wall_seconds, left);
-                    outcomes = run_tests(program, batch);
-                }
-                for (std::size_t i = 0; i < batch.size(); ++i) score(tests[first + i], std::move(outcomes[i]));
+            const double left = seconds_left();
+            if (reason || failure) {
+                score(t, not_run(lab.lab, names[t], failure, reason));
+            } else if (left < 0.5) {
+                score(t, not_run(lab.lab, names[t], out_of_budget(), std::nullopt));
+            } else {
+                program.limits.wall_seconds = std::min(setup_.test_limits.wall_seconds, left);
+                score(t, run_test(program, names[t]));
             }
         };
         for (std::size_t r = 0; r < lab.rules.size(); ++r) {
             const std::optional<std::string> unmet = unmet_prerequisite(lab.rules[r], finished_);
-            std::vector<std::size_t> tests;
-            for (std::size_t t = 0; t < names.size(); ++t)
-                if (plan.rule_of_test[t] == &lab.rules[r]) tests.push_back(t);
-            grade_tests(tests, unmet);
             std::vector<Failure>& failures = finished_[lab.lab + ":" + lab.rules[r].id];
-            for (const std::size_t t : tests)
+            for (std::size_t t = 0; t < names.size(); ++t) {
+                if (plan.rule_of_test[t] != &lab.rules[r]) continue;
+                grade_test(t, unmet);
                 if (result.tests[t].outcome.status != Status::passed) failures.push_back({names[t], result.tests[t].outcome.status});
+            }
         }
-        std::vector<std::size_t> unmatched;
         for (std::size_t t = 0; t < names.size(); ++t)
-            if (!plan.rule_of_test[t]) unmatched.push_back(t);
-        grade_tests(unmatched, std::nullopt);
+            if (!plan.rule_of_test[t]) grade_test(t, std::nullopt);
         for (const ScoredTest& test : result.tests) {
             result.score_cents += test.score_cents;
             result.max_cents += test.max_cents;
@@ -197,16 +187,11 @@ private:
 
     double seconds_left() const { return std::chrono::duration<double>(deadline_ - Clock::now()).count(); }
 
-    // A test that was not run because the grading's time budget ran out.
-    TestOutcome out_of_budget(const std::string& lab, const std::string& name) const {
-        TestOutcome outcome;
-        outcome.lab = lab;
-        outcome.name = name;
-        outcome.status = Status::timeout;
+    // Why a test is not run once the grading's time budget ran out.
+    LabFailure out_of_budget() const {
         char seconds[32];
         std::snprintf(seconds, sizeof seconds, "%g", setup_.budget_seconds);
-        outcome.message = std::string("not run: the grading's time budget of ") + seconds + " s ran out";
-        return outcome;
+        return {Status::timeout, std::string("not run: the grading's time budget of ") + seconds + " s ran out", ""};
     }
 
     // The outcome of a test that is not run.

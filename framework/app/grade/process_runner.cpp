@@ -252,18 +252,9 @@ std::vector<ProcessRun> run_together(const std::vector<ProcessSpec>& specs) {
     return run_all(specs, std::vector<int>(specs.size(), -1), 0.0);
 }
 
-std::vector<std::pair<ProcessRun, ProcessRun>> run_pairs(const std::vector<ProcessPair>& pairs, double linger_seconds) {
-    std::vector<ProcessSpec> specs;
-    std::vector<int> leaders;
-    for (const ProcessPair& pair : pairs) {
-        leaders.insert(leaders.end(), {-1, static_cast<int>(specs.size())});
-        specs.push_back(pair.leader);
-        specs.push_back(pair.follower);
-    }
-    std::vector<ProcessRun> runs = run_all(specs, leaders, linger_seconds);
-    std::vector<std::pair<ProcessRun, ProcessRun>> result;
-    for (std::size_t i = 0; i < runs.size(); i += 2) result.emplace_back(std::move(runs[i]), std::move(runs[i + 1]));
-    return result;
+std::pair<ProcessRun, ProcessRun> run_pair(const ProcessPair& pair, double linger_seconds) {
+    std::vector<ProcessRun> runs = run_all({pair.leader, pair.follower}, {-1, 0}, linger_seconds);
+    return {std::move(runs[0]), std::move(runs[1])};
 }
 
 ProcessRun run_process(const ProcessSpec& spec) { return run_together({spec}).front(); }

@@ -70,8 +70,8 @@ struct ProcessPair {
     ProcessSpec follower;
 };
 
-/// Runs every program of the pairs at once; returns (leader, follower) runs.
-std::vector<std::pair<ProcessRun, ProcessRun>> run_pairs(const std::vector<ProcessPair>& pairs, double linger_seconds);
+/// Runs the two programs at once; returns (leader, follower) runs.
+std::pair<ProcessRun, ProcessRun> run_pair(const ProcessPair& pair, double linger_seconds);
 
 /// Makes this process the reaper of every orphan among its descendants, so that
 /// a process that left its group (setsid) still ends up as our child.

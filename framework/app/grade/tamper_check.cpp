@@ -6,22 +6,25 @@ namespace whitted::grade {
 
 namespace fs = std::filesystem;
 
-FileRecord FileRecord::of(const std::vector<fs::path>& folders, const std::vector<std::string>& extensions) {
+FileRecord FileRecord::of(const std::vector<fs::path>& paths, const std::vector<std::string>& extensions) {
     FileRecord record;
-    for (const fs::path& folder : folders) {
+    auto add = [&](const fs::path& file) {
         std::error_code error;
-        if (!fs::is_directory(folder, error)) continue;
-        for (fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, error), end;
+        const std::uintmax_t size = fs::file_size(file, error);
+        const auto modified = fs::last_write_time(file, error).time_since_epoch();
+        if (!error) record.files_[file.string()] = Stamp{size, std::chrono::duration_cast<std::chrono::nanoseconds>(modified).count()};
+    };
+    for (const fs::path& path : paths) {
+        std::error_code error;
+        if (fs::is_regular_file(path, error)) add(path);
+        if (!fs::is_directory(path, error)) continue;
+        for (fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, error), end;
              !error && it != end; it.increment(error)) {
             std::error_code stat_error;
             if (!it->is_regular_file(stat_error)) continue;
             if (!extensions.empty() && std::find(extensions.begin(), extensions.end(), it->path().extension().string()) == extensions.end())
                 continue;
-            const std::uintmax_t size = it->file_size(stat_error);
-            const auto modified = it->last_write_time(stat_error).time_since_epoch();
-            if (stat_error) continue;
-            record.files_[it->path().string()] =
-                Stamp{size, std::chrono::duration_cast<std::chrono::nanoseconds>(modified).count()};
+            add(it->path());
         }
     }
     return record;

@@ -20,9 +20,10 @@ namespace whitted::grade {
 
 class FileRecord {
 public:
-    /// Records every file under the folders (those that exist), or only those
-    /// whose extension is in `extensions` (".a") when it is not empty.
-    static FileRecord of(const std::vector<std::filesystem::path>& folders, const std::vector<std::string>& extensions = {});
+    /// Records the files given and every file under the folders given (those
+    /// that exist); under folders only those whose extension is in
+    /// `extensions` (".a") when it is not empty.
+    static FileRecord of(const std::vector<std::filesystem::path>& paths, const std::vector<std::string>& extensions = {});
 
     /// Adds the other record's files to this one.
     void add(const FileRecord& other) { files_.insert(other.files_.begin(), other.files_.end()); }

@@ -4,7 +4,6 @@
 
 #include "channel.hpp"
 
-
 namespace whitted::grade {
 
 std::string folder_name(const std::string& test_name) {
@@ -55,47 +54,38 @@ std::vector<std::string> list_tests(const TestProgram& program, std::string& pro
     return names;
 }
 
-std::vector<TestOutcome> run_tests(const TestProgram& program, const std::vector<std::string>& test_names) {
-    std::vector<ProcessPair> pairs;
-    std::vector<fs::path> folders;
-    for (const std::string& name : test_names) {
-        const fs::path folder = program.output / folder_name(name);
-        fs::remove_all(folder);
-        fs::create_directories(folder);
-        folders.push_back(folder);
-        // The descriptors go to the two programs: the grader keeps none, so each sees when the other has gone.
-        const link::ChannelPair channel = link::make_channel_pair();
-        ProcessSpec check = checker_spec(program,
-                                         {"--worker-fds=3,4,5", "--gtest_filter=" + name, "--gtest_color=no",
-                                          "--gtest_output=json:" + (folder / "gtest.json").string()},
-                                         folder);
-        check.descriptors = {channel.checker.memory, channel.checker.wake_in, channel.checker.wake_out};
-        ProcessSpec work;
-        work.argv = program.worker;
-        work.working_directory = fs::path(program.worker.front()).parent_path();
-        work.limits = program.limits;
-        work.limits.file_size = 1; // the worker writes no file: what it has to say crosses the link
-        work.descriptors = {channel.worker.memory, channel.worker.wake_in, channel.worker.wake_out};
-        pairs.push_back({std::move(check), program.sandbox.wrap(std::move(work), {fs::path(program.worker.front())}, std::nullopt)});
-    }
-    const std::vector<std::pair<ProcessRun, ProcessRun>> runs = run_pairs(pairs, program.linger_seconds);
+TestOutcome run_test(const TestProgram& program, const std::string& test_name) {
+    const fs::path folder = program.output / folder_name(test_name);
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    // The descriptors go to the two programs: the grader keeps none, so each sees when the other has gone.
+    const link::ChannelPair channel = link::make_channel_pair();
+    ProcessSpec check = checker_spec(program,
+                                     {"--worker-fds=3,4,5", "--gtest_filter=" + test_name, "--gtest_color=no",
+                                      "--gtest_output=json:" + (folder / "gtest.json").string()},
+                                     folder);
+    check.descriptors = {channel.checker.memory, channel.checker.wake_in, channel.checker.wake_out};
+    ProcessSpec work;
+    work.argv = program.worker;
+    work.working_directory = fs::path(program.worker.front()).parent_path();
+    work.limits = program.limits;
+    work.limits.file_size = 1; // the worker writes no file: what it has to say crosses the link
+    work.descriptors = {channel.worker.memory, channel.worker.wake_in, channel.worker.wake_out};
+    const auto [checker, worker] =
+        run_pair({std::move(check), program.sandbox.wrap(std::move(work), {fs::path(program.worker.front())}, std::nullopt)},
+                 program.linger_seconds);
     program.sandbox.end_runs();
-    std::vector<TestOutcome> outcomes;
-    for (std::size_t i = 0; i < test_names.size(); ++i) {
-        TestOutcome outcome;
-        outcome.lab = program.lab;
-        outcome.name = test_names[i];
-        classify_pair(outcome, runs[i].first, program.sandbox.unwrap(runs[i].second), program.limits, folders[i] / "gtest.json");
-        outcome.message = replace_paths(outcome.message, program.path_replacements);
-        outcome.output = trim_text(replace_paths(outcome.output, program.path_replacements), 60);
-        outcome.image = read_image_numbers(folders[i] / "image.json");
-        if (fs::exists(folders[i] / "reference.png") || fs::exists(folders[i] / "yours.png")) outcome.pictures = folders[i];
-        outcomes.push_back(std::move(outcome));
-    }
-    return outcomes;
-}
 
-TestOutcome run_test(const TestProgram& program, const std::string& test_name) { return run_tests(program, {test_name}).front(); }
+    TestOutcome outcome;
+    outcome.lab = program.lab;
+    outcome.name = test_name;
+    classify_pair(outcome, checker, program.sandbox.unwrap(worker), program.limits, folder / "gtest.json");
+    outcome.message = replace_paths(outcome.message, program.path_replacements);
+    outcome.output = trim_text(replace_paths(outcome.output, program.path_replacements), 60);
+    outcome.image = read_image_numbers(folder / "image.json");
+    if (fs::exists(folder / "reference.png") || fs::exists(folder / "yours.png")) outcome.pictures = folder;
+    return outcome;
+}
 
 fs::path fetch_reference_picture(const TestProgram& program, const std::string& test_name) {
     const fs::path folder = program.output / folder_name(test_name);

@@ -39,9 +39,6 @@ std::vector<std::string> list_tests(const TestProgram& program, std::string& pro
 /// a new link between them; then kills whatever either left running.
 TestOutcome run_test(const TestProgram& program, const std::string& test_name);
 
-/// Runs the tests at once, each as its own pair (run_test); outcomes in the same order.
-std::vector<TestOutcome> run_tests(const TestProgram& program, const std::vector<std::string>& test_names);
-
 /// Asks the checker alone for an image test's reference picture (nothing is
 /// rendered); returns the folder holding reference.png, or empty.
 std::filesystem::path fetch_reference_picture(const TestProgram& program, const std::string& test_name);
