@@ -1,5 +1,5 @@
 // Each GoogleTest test runs as its own pair of processes (a checker and a
-// worker) and ends with the right status. fake_lab plays the checker (its
+// worker) and ends with the right status; run together, only clean passes count. fake_lab plays the checker (its
 // tests end in every way a test can); misbehaving_child plays the worker.
 #include "grade/test_runner.hpp"
 
@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <map>
+#include <set>
 #include <unistd.h>
 
 using namespace whitted::grade;
@@ -100,6 +101,29 @@ TEST_F(TestRunnerTest, TheWorkersEndingComesFirst) {
     outcome = run_test(program, "Fake.Passes");
     EXPECT_EQ(outcome.status, Status::crash);
     EXPECT_NE(outcome.message.find("went on running after the test was over"), std::string::npos) << outcome.message;
+}
+
+// A lab's tests run together first; only the passes of a run that ended
+// cleanly count, and the grader runs every other test on its own.
+TEST_F(TestRunnerTest, TogetherOnlyTheTestsThatPassedCount) {
+    const std::vector<std::string> names = {"Fake.Passes", "Fake.GivesAWrongAnswer", "Fake.CallsAStub", "Fake.ThrowsSomethingElse",
+                                            "FakeImage.IsTwoPercentOff", "HiddenFake.Passes"};
+    EXPECT_EQ(passed_together(program, names, 10.0), (std::set<std::string>{"Fake.Passes", "HiddenFake.Passes"}));
+    EXPECT_TRUE(passed_together(program, {}, 10.0).empty());
+}
+
+TEST_F(TestRunnerTest, TogetherARunThatDidNotEndCleanlyCountsForNothing) {
+    EXPECT_TRUE(passed_together(program, {"Fake.Passes", "Fake.Segfaults"}, 10.0).empty()) << "the checker crashed";
+    EXPECT_TRUE(passed_together(program, {"Fake.Passes", "Fake.Loops"}, 0.5).empty()) << "a test hung";
+    EXPECT_TRUE(passed_together(program, {"Fake.Passes", "Fake.NoSuchTest"}, 10.0).empty()) << "a test did not run";
+    EXPECT_TRUE(passed_together(program, {"Fake.Passes", "-Fake.Passes"}, 10.0).empty()) << "not a plain name";
+    program.worker = {MISBEHAVING_CHILD, "segfault"};
+    EXPECT_TRUE(passed_together(program, {"Fake.Passes"}, 10.0).empty()) << "the worker crashed";
+    program.worker = {MISBEHAVING_CHILD, "exit", "1"};
+    EXPECT_TRUE(passed_together(program, {"Fake.Passes"}, 10.0).empty()) << "the worker exited early";
+    program.worker = {MISBEHAVING_CHILD, "sleep"};
+    program.linger_seconds = 0.2;
+    EXPECT_TRUE(passed_together(program, {"Fake.Passes"}, 10.0).empty()) << "the worker went on running";
 }
 
 TEST_F(TestRunnerTest, FolderNamesStayInTheirFolder) {

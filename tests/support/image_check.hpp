@@ -11,6 +11,8 @@
 // rendering, so it is there even when the render throws or crashes. With
 // WHITTED_REFERENCE_ONLY=1 as well, the test stops there (skipped): the grader
 // shows the reference picture of an image test it does not run.
+// With WHITTED_TOGETHER=1 (the grader's first run of all of a lab's tests in
+// one program) the test fails at once: the grader runs it again on its own.
 // With WHITTED_UPDATE_REFERENCES=1 in the environment the test writes the
 // reference instead (`make references`, instructors only: it must be run with
 // the reference solution linked).

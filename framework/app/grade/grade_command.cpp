@@ -115,7 +115,12 @@ int run_grade(const GradeOptions& options) {
     // Orphans of a test (a process that left its group) come back to us, to be killed.
     become_subreaper();
     setup.jobs = options.jobs;
-    if (!options.quiet) setup.progress = [](const std::string& line) { std::fprintf(stderr, "grade: %s\n", line.c_str()); };
+    // Each line with the seconds since the start: where a grading spends its time.
+    if (!options.quiet)
+        setup.progress = [start](const std::string& line) {
+            std::fprintf(stderr, "grade: %5.1f s  %s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                         line.c_str());
+        };
 
     GradingResult result;
     std::string problem;

@@ -1,7 +1,7 @@
 // Grading one submission: build the student's workers from the grading kit,
-// then lab by lab in rubric order list the checker's tests, run each as a
-// checker and worker pair unless a prerequisite failed, and score them with
-// the rubric.
+// then lab by lab in rubric order list the checker's tests, run them all in
+// one checker and worker pair, run each that did not pass there in a pair of
+// its own unless a prerequisite failed, and score them with the rubric.
 #pragma once
 
 #include "grade/process_runner.hpp"

@@ -188,6 +188,16 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
     outcome.output = details;
 }
 
+std::optional<std::map<std::string, bool>> read_test_results(const std::filesystem::path& report_file) {
+    const std::optional<json> report = read_json(report_file);
+    if (!report || !report->is_object()) return std::nullopt;
+    std::map<std::string, bool> results;
+    for (const json& suite : report->value("testsuites", json::array()))
+        for (const json& test : suite.value("testsuite", json::array()))
+            results[suite.value("name", "") + "." + test.value("name", "")] = test.value("failures", json::array()).empty();
+    return results;
+}
+
 std::optional<ImageNumbers> read_image_numbers(const std::filesystem::path& file) {
     const std::optional<json> value = read_json(file);
     if (!value || !value->is_object()) return std::nullopt;

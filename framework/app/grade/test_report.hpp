@@ -6,7 +6,9 @@
 #include "grade/process_runner.hpp"
 
 #include <filesystem>
+#include <map>
 #include <optional>
+#include <string>
 
 namespace whitted::grade {
 
@@ -21,6 +23,10 @@ void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& lim
 /// checker's verdict. The worker's output follows the details, marked as such.
 void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const ProcessRun& worker, const Limits& limits,
                    const std::filesystem::path& report_file);
+
+/// Every test GoogleTest's JSON report records, with true for those that passed
+/// (no failure); empty if the file is missing, unreadable or not a report.
+std::optional<std::map<std::string, bool>> read_test_results(const std::filesystem::path& report_file);
 
 /// Reads tests/support's image.json; empty if the file is missing or unreadable.
 std::optional<ImageNumbers> read_image_numbers(const std::filesystem::path& file);
