@@ -1,5 +1,5 @@
 // A program that misbehaves on request, for the process runner's tests:
-//   misbehaving_child exit N | segfault | abort | loop | sleep | allocate | touch MB | big-file | spew MB | env NAME | orphan
+//   misbehaving_child exit N | segfault | abort | loop | sleep | allocate | touch MB | children MB | big-file | spew MB | env NAME | orphan
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -52,6 +53,26 @@ int main(int argc, char** argv) {
         const char* value = std::getenv(argument.c_str());
         std::printf("%s\n", value ? value : "(unset)");
         return 0;
+    }
+    if (mode == "children") { // three children use MB megabytes each at once; exits 0 if all three did
+        std::vector<pid_t> children;
+        for (int i = 0; i < 3; ++i) {
+            const pid_t child = fork();
+            if (child == 0) {
+                std::vector<char> block(static_cast<std::size_t>(std::atol(argument.c_str())) << 20);
+                std::memset(block.data(), 1, block.size());
+                std::this_thread::sleep_for(std::chrono::milliseconds(300));
+                _exit(block[block.size() / 2] == 1 ? 0 : 1);
+            }
+            children.push_back(child);
+        }
+        int failed = 0;
+        for (const pid_t child : children) {
+            int status = 0;
+            waitpid(child, &status, 0);
+            failed += !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+        }
+        return failed == 0 ? 0 : 1;
     }
     if (mode == "orphan") { // leaves a sleeping child that holds the output open
         if (fork() == 0) std::this_thread::sleep_for(std::chrono::hours(1));

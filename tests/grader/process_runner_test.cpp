@@ -1,4 +1,5 @@
 // The process runner tells every way a child can end apart, and survives all of them.
+#include "grade/control_group.hpp"
 #include "grade/process_runner.hpp"
 
 #include <gtest/gtest.h>
@@ -6,6 +7,7 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <optional>
 
 using namespace whitted::grade;
 
@@ -15,7 +17,7 @@ ProcessRun run_child(std::vector<std::string> arguments, Limits limits = {}) {
     arguments.insert(arguments.begin(), MISBEHAVING_CHILD);
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("runner_test_" + std::to_string(getpid()));
     std::filesystem::create_directories(folder);
-    ProcessRun run = run_process({arguments, folder, {{"WHITTED_RUNNER_TEST", "42"}}, limits, {}, {}, false});
+    ProcessRun run = run_process({arguments, folder, {{"WHITTED_RUNNER_TEST", "42"}}, limits, {}, {}, false, {}});
     std::filesystem::remove_all(folder);
     return run;
 }
@@ -119,7 +121,25 @@ TEST(ProcessRunner, PeakMemoryOfTheChildIsMeasured) {
 }
 
 TEST(ProcessRunner, MissingProgramFailsToStart) {
-    const ProcessRun run = run_process({{"/no/such/program"}, {}, {}, {}, {}, {}, false});
+    const ProcessRun run = run_process({{"/no/such/program"}, {}, {}, {}, {}, {}, false, {}});
     EXPECT_EQ(run.end, ProcessRun::End::failed_to_start);
     EXPECT_NE(run.start_error.find("No such file"), std::string::npos) << run.start_error;
+}
+
+// A control group bounds the memory of all its processes together, which
+// RLIMIT_AS (one process each) does not: three children of 100 MiB fit no
+// 200 MiB group. Needs root and a writable cgroup hierarchy (else skipped).
+TEST(ProcessRunner, AControlGroupBoundsTheMemoryOfAllItsProcessesTogether) {
+    std::string problem;
+    std::optional<ControlGroup> group = ControlGroup::make(std::size_t{200} << 20, 64, problem);
+    if (!group) GTEST_SKIP() << problem;
+    ProcessSpec spec{{MISBEHAVING_CHILD, "children", "100"}, {}, {}, short_limits(), {}, {}, false, {}};
+    spec.limits.wall_seconds = 10;
+    EXPECT_EQ(run_process(spec).exit_code, 0) << "outside the group";
+    spec.join_groups = group->join_files();
+    const ProcessRun run = run_process(spec);
+    EXPECT_FALSE(run.end == ProcessRun::End::exited && run.exit_code == 0) << "inside the group: " << describe(run, spec.limits);
+    kill_group_processes(group->join_files());
+    spec.argv = {MISBEHAVING_CHILD, "children", "10"};
+    EXPECT_EQ(run_process(spec).exit_code, 0) << "inside the group, small enough";
 }

@@ -1,5 +1,6 @@
 #include "grade/grading.hpp"
 #include "grade/builder.hpp"
+#include "grade/control_group.hpp"
 #include "grade/kit.hpp"
 #include "grade/submission.hpp"
 #include "grade/tamper_check.hpp"
@@ -71,6 +72,17 @@ public:
         } catch (const std::runtime_error& e) {
             throw GraderFailure(e.what());
         }
+        // One ceiling for all the student's code's processes at once, where the machine gives a control group.
+        std::string no_group;
+        if (std::optional<ControlGroup> group = ControlGroup::make(compile_memory(), sandbox_.processes, no_group)) {
+            group_.emplace(std::move(*group));
+            sandbox_.groups = group_->join_files();
+            sandbox_.description += ", a " + group_->kind() + " for all its processes together (" + mebibytes(compile_memory()) +
+                                    " while compiling, " + mebibytes(setup_.test_limits.address_space) + " while tested, " +
+                                    std::to_string(sandbox_.processes) + " processes)";
+        } else {
+            sandbox_.description += "; " + no_group + " (the memory ceiling is per process)";
+        }
         setup_.progress(sandbox_.description);
         if (!sandbox_.bwrap_error.empty()) setup_.progress("bwrap said: " + sandbox_.bwrap_error);
         return sandbox_;
@@ -113,6 +125,8 @@ public:
         }
         if (all_compiled) link("integration", labs);
         else failures_["integration"] = {Status::compile_error, "the labs do not build together: not every lab file compiles", ""};
+        if (group_ && !group_->set_memory(setup_.test_limits.address_space))
+            throw GraderFailure("cannot lower the memory ceiling of the student's code's control group for the tests");
     }
 
     LabResult grade(const LabRubric& lab) {
@@ -206,6 +220,10 @@ private:
 
     using Clock = std::chrono::steady_clock;
 
+    // The control group's ceiling while `--jobs` compilers run.
+    std::size_t compile_memory() const { return static_cast<std::size_t>(std::max(setup_.jobs, 1)) * kCompilerMemory; }
+    static std::string mebibytes(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
+
     double seconds_left() const { return std::chrono::duration<double>(deadline_ - Clock::now()).count(); }
 
     // Why a test is not run once the grading's time budget ran out.
@@ -231,6 +249,7 @@ private:
     std::vector<std::pair<std::string, std::string>> paths_;
     WorkerKit kit_;
     Sandbox sandbox_;
+    std::optional<ControlGroup> group_; // removed with the grader, after its last run
     FileRecord relied_on_;
     std::map<std::string, LabFailure> failures_; // lab or "integration" -> why its worker was not built
     RuleFailures finished_;

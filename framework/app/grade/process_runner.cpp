@@ -58,8 +58,15 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
 
 // In the child, between fork and exec: only async-signal-safe calls.
 [[noreturn]] void become_child(const ProcessSpec& spec, char** argv, char** envp, int output_fd, int error_fd,
-                               const int* descriptors, std::size_t descriptor_count) {
+                               const int* descriptors, std::size_t descriptor_count, const int* groups, std::size_t group_count) {
     setpgid(0, 0);
+    for (std::size_t i = 0; i < group_count; ++i) {
+        if (write(groups[i], "0", 1) != 1) { // "0": this process; its children follow it
+            const int error = errno;
+            [[maybe_unused]] auto written = write(error_fd, &error, sizeof error);
+            _exit(127);
+        }
+    }
     // Out of the way of 3, 4, ... first: the pipes and the descriptors to hand on may be any of them.
     output_fd = fcntl(output_fd, F_DUPFD_CLOEXEC, 100);
     error_fd = fcntl(error_fd, F_DUPFD_CLOEXEC, 100);
@@ -135,11 +142,24 @@ Running start_child(const ProcessSpec& spec) {
         r.run.start_error = std::strerror(errno);
         return r;
     }
+    std::vector<int> groups;
+    for (const std::filesystem::path& file : spec.join_groups) {
+        groups.push_back(open(file.c_str(), O_WRONLY | O_CLOEXEC));
+        if (groups.back() < 0) {
+            r.run.start_error = "cannot join the control group " + file.string() + ": " + std::strerror(errno);
+            for (const int fd : groups)
+                if (fd >= 0) close(fd);
+            for (const int fd : {output[0], output[1], start_error[0], start_error[1]}) close(fd);
+            return r;
+        }
+    }
     r.start = Clock::now();
     r.deadline = r.start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(spec.limits.wall_seconds));
     const pid_t pid = fork();
     if (pid == 0)
-        become_child(spec, argv.data(), envp.data(), output[1], start_error[1], spec.descriptors.data(), spec.descriptors.size());
+        become_child(spec, argv.data(), envp.data(), output[1], start_error[1], spec.descriptors.data(), spec.descriptors.size(),
+                     groups.data(), groups.size());
+    for (const int fd : groups) close(fd);
     close(output[1]);
     close(start_error[1]);
     if (pid < 0) {

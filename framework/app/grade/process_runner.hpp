@@ -40,6 +40,7 @@ struct ProcessSpec {
     std::optional<Identity> identity; // switch to this user after the limits are set; empty: stay who we are
     std::vector<int> descriptors;     // handed to the program as descriptors 3, 4, ...; the grader's copies are closed once it started
     bool clean_environment = false;   // start from an empty environment (PATH=/usr/bin:/bin, LC_ALL=C), not the grader's
+    std::vector<std::filesystem::path> join_groups; // cgroup.procs files to join before the limits are set (control_group.hpp)
 };
 
 /// How a run ended. Core dumps are always off (RLIMIT_CORE = 0).

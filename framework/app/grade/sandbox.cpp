@@ -1,4 +1,5 @@
 #include "grade/sandbox.hpp"
+#include "grade/control_group.hpp"
 
 #include <stdexcept>
 #include <unistd.h>
@@ -52,6 +53,7 @@ void add_system_folders(std::vector<std::string>& options) {
 ProcessSpec Sandbox::wrap(ProcessSpec spec, const std::vector<fs::path>& readable, const std::optional<fs::path>& writable) const {
     spec.identity = identity;
     spec.clean_environment = true;
+    spec.join_groups = groups;
     if (processes > 0) spec.limits.processes = processes;
     if (!bubblewrap) return spec;
     std::vector<std::string> argv = bwrap_prefix;
@@ -66,6 +68,7 @@ ProcessSpec Sandbox::wrap(ProcessSpec spec, const std::vector<fs::path>& readabl
 }
 
 void Sandbox::end_runs() const {
+    kill_group_processes(groups);
     if (identity) kill_user_processes(identity->uid);
     kill_leftover_children();
 }

@@ -15,6 +15,8 @@
 //     (no account, no other process has it): the grader's files are then
 //     protected by their permissions, RLIMIT_NPROC binds, and every process of
 //     that user can be killed after each run without touching anyone else's.
+//   - a control group of the grading's own where the machine gives one
+//     (control_group.hpp): one memory and process ceiling for all of it.
 //   - after each run, whatever it left running outside its process group is
 //     killed (the grader is a child subreaper).
 // Without bubblewrap, the answers are safe only when other users cannot read
@@ -37,6 +39,7 @@ struct Sandbox {
     bool bubblewrap = false;
     std::optional<Identity> identity; // a user id of the grading's own, when the grader is root
     long processes = 0;               // RLIMIT_NPROC for the student's code; 0: none
+    std::vector<std::filesystem::path> groups; // cgroup.procs files of the grading's control group, if it has one
     std::vector<std::string> bwrap_prefix; // bwrap and its options for the system folders
     std::string description;               // one line for the instructor, without paths: which fences are up
     std::string exposed;                   // for the instructor: what the student's code could read, or empty
@@ -46,8 +49,9 @@ struct Sandbox {
     ProcessSpec wrap(ProcessSpec spec, const std::vector<std::filesystem::path>& readable,
                      const std::optional<std::filesystem::path>& writable) const;
 
-    /// After runs of the student's code: kills every process of its user (when
-    /// it has one of its own), then whatever is left among the grader's children.
+    /// After runs of the student's code: kills every process of its control
+    /// group and of its user (when it has them), then whatever is left among
+    /// the grader's children.
     void end_runs() const;
 
     /// How the wrapped program ended: bubblewrap reports a program killed by

@@ -17,7 +17,7 @@ Limits compiler_limits(const WorkerBuild& build) {
     const double left = std::chrono::duration<double>(build.deadline - std::chrono::steady_clock::now()).count();
     limits.wall_seconds = std::clamp(left, 0.5, 120.0);
     limits.cpu_seconds = 120;
-    limits.address_space = std::size_t{2} << 30;
+    limits.address_space = kCompilerMemory;
     limits.file_size = std::size_t{128} << 20;
     limits.output_bytes = 64 * 1024;
     return limits;

@@ -20,6 +20,9 @@
 
 namespace whitted::grade {
 
+/// The address space of one compiler or linker of the student's code.
+constexpr std::size_t kCompilerMemory = std::size_t{2} << 30;
+
 struct WorkerBuild {
     const WorkerKit& kit;       // staged
     const Sandbox& sandbox;
