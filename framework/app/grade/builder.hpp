@@ -3,7 +3,8 @@
 // Why: the checkers (the tests with the reference) and the grading kit (what a
 // worker is built from) come from the instructor's own CMake build of the
 // tree. They must be current, so the grader builds their target there before
-// each grading, under the folder's lock: a no-op when nothing changed.
+// each grading, under the folder's lock, unless no file of the tree and none
+// of what the last update made has changed since (path, size and time).
 #pragma once
 
 #include <filesystem>
@@ -19,9 +20,15 @@ struct BuildStep {
 };
 
 /// Builds the target grading_parts of the instructor build `build` (a Release
-/// build of `instructor_tree` with its tests). Throws std::runtime_error saying
+/// build of `instructor_tree` with its tests), unless nothing changed since its
+/// last update (BUILD/grading-parts.state). Throws std::runtime_error saying
 /// why it cannot be used.
 void update_instructor_build(const std::filesystem::path& build, const std::filesystem::path& instructor_tree, int jobs);
+
+/// A fingerprint of every file of the tree the build may read (path, size,
+/// modification time): all but build folders (with a CMakeCache.txt), graders'
+/// output folders (with a .whitted-grade file) and hidden ones (.git).
+std::string source_state(const std::filesystem::path& tree);
 
 /// The compiler's first errors in a build log, without build-tool noise and
 /// with the given paths replaced (absolute -> shown).

@@ -101,30 +101,34 @@ public:
         setup_.progress("compiling the lab files");
         const std::map<std::string, BuildStep> compiled = compile_labs(worker_build, labs);
         bool all_compiled = true;
-        auto link = [&](const std::string& name, const std::vector<std::string>& own) {
-            setup_.progress("linking the worker of " + name);
-            const BuildStep linked = link_worker(worker_build, "worker_" + name, own, labs);
-            if (!linked.ok) {
-                failures_[name] = {Status::compile_error, "the worker of " + name + " does not link", first_compiler_errors(linked.log, paths_)};
-                return;
+        std::vector<WorkerParts> workers;
+        for (const std::string& lab : labs) {
+            const BuildStep& step = compiled.at(lab);
+            if (step.ok) {
+                workers.push_back({lab, {lab}});
+            } else {
+                all_compiled = false;
+                failures_[lab] = {Status::compile_error, "labs/" + lab + ".cpp does not compile", first_compiler_errors(step.log, paths_)};
+            }
+        }
+        if (all_compiled) workers.push_back({"integration", labs});
+        else failures_["integration"] = {Status::compile_error, "the labs do not build together: not every lab file compiles", ""};
+        for (WorkerParts& worker : workers) worker.name = "worker_" + worker.name;
+        setup_.progress("linking the workers");
+        const std::map<std::string, BuildStep> linked = link_workers(worker_build, workers, labs);
+        for (const WorkerParts& worker : workers) {
+            const std::string name = worker.name.substr(7); // the lab, or "integration"
+            const BuildStep& step = linked.at(worker.name);
+            if (!step.ok) {
+                failures_[name] = {Status::compile_error, "the worker of " + name + " does not link", first_compiler_errors(step.log, paths_)};
+                continue;
             }
             try {
-                take_program(build / ("worker_" + name), setup_.work / "workers" / ("worker_" + name));
+                take_program(build / worker.name, setup_.work / "workers" / worker.name);
             } catch (const std::exception& e) {
                 failures_[name] = {Status::compile_error, std::string("the worker of ") + name + " " + e.what(), ""};
             }
-        };
-        for (const std::string& lab : labs) {
-            const BuildStep& step = compiled.at(lab);
-            if (!step.ok) {
-                all_compiled = false;
-                failures_[lab] = {Status::compile_error, "labs/" + lab + ".cpp does not compile", first_compiler_errors(step.log, paths_)};
-                continue;
-            }
-            link(lab, {lab});
         }
-        if (all_compiled) link("integration", labs);
-        else failures_["integration"] = {Status::compile_error, "the labs do not build together: not every lab file compiles", ""};
         if (group_ && !group_->set_memory(setup_.test_limits.address_space))
             throw GraderFailure("cannot lower the memory ceiling of the student's code's control group for the tests");
     }

@@ -42,41 +42,58 @@ BuildStep step_of(const ProcessRun& run, const Limits& limits) {
 
 } // namespace
 
-std::map<std::string, BuildStep> compile_labs(const WorkerBuild& build, const std::vector<std::string>& labs) {
-    std::map<std::string, BuildStep> steps;
-    for (std::size_t first = 0; first < labs.size(); first += static_cast<std::size_t>(std::max(1, build.jobs))) {
-        std::vector<ProcessSpec> specs;
-        const std::size_t last = std::min(labs.size(), first + static_cast<std::size_t>(std::max(1, build.jobs)));
-        for (std::size_t i = first; i < last; ++i) {
-            std::vector<std::string> argv = {build.kit.compiler.string()};
-            argv.insert(argv.end(), build.kit.compile_arguments.begin(), build.kit.compile_arguments.end());
-            argv.insert(argv.end(), {"-I", kit_include(build.kit).string(), "-c", "labs/" + labs[i] + ".cpp", "-o", labs[i] + ".o"});
-            specs.push_back(fenced(build, std::move(argv)));
-        }
-        const std::vector<ProcessRun> runs = run_together(specs);
-        for (std::size_t i = first; i < last; ++i)
-            steps[labs[i]] = step_of(build.sandbox.unwrap(runs[i - first]), specs[i - first].limits);
+namespace {
+
+// Runs the fenced steps `jobs` at a time; returns each step's outcome, in order.
+std::vector<BuildStep> run_steps(const WorkerBuild& build, const std::vector<ProcessSpec>& specs) {
+    std::vector<BuildStep> steps;
+    const std::size_t jobs = static_cast<std::size_t>(std::max(1, build.jobs));
+    for (std::size_t first = 0; first < specs.size(); first += jobs) {
+        const std::vector<ProcessSpec> batch(specs.begin() + static_cast<std::ptrdiff_t>(first),
+                                             specs.begin() + static_cast<std::ptrdiff_t>(std::min(specs.size(), first + jobs)));
+        const std::vector<ProcessRun> runs = run_together(batch);
+        for (std::size_t i = 0; i < batch.size(); ++i) steps.push_back(step_of(build.sandbox.unwrap(runs[i]), batch[i].limits));
         build.sandbox.end_runs();
     }
     return steps;
 }
 
-BuildStep link_worker(const WorkerBuild& build, const std::string& name, const std::vector<std::string>& own_labs,
-                      const std::vector<std::string>& all_labs) {
-    std::vector<std::string> argv = {build.kit.compiler.string()};
-    argv.insert(argv.end(), build.kit.compile_arguments.begin(), build.kit.compile_arguments.end());
-    argv.push_back(build.kit.main_object.string());
-    for (const std::string& lab : all_labs) {
-        if (std::find(own_labs.begin(), own_labs.end(), lab) != own_labs.end()) argv.push_back(lab + ".o");
-        else argv.push_back(build.kit.remote_objects.at(lab).string());
+} // namespace
+
+std::map<std::string, BuildStep> compile_labs(const WorkerBuild& build, const std::vector<std::string>& labs) {
+    std::vector<ProcessSpec> specs;
+    for (const std::string& lab : labs) {
+        std::vector<std::string> argv = {build.kit.compiler.string()};
+        argv.insert(argv.end(), build.kit.compile_arguments.begin(), build.kit.compile_arguments.end());
+        argv.insert(argv.end(), {"-I", kit_include(build.kit).string(), "-c", "labs/" + lab + ".cpp", "-o", lab + ".o"});
+        specs.push_back(fenced(build, std::move(argv)));
     }
-    for (const fs::path& library : build.kit.libraries) argv.push_back(library.string());
-    argv.insert(argv.end(), build.kit.link_arguments.begin(), build.kit.link_arguments.end());
-    argv.insert(argv.end(), {"-o", name});
-    const ProcessSpec spec = fenced(build, std::move(argv));
-    const BuildStep step = step_of(build.sandbox.unwrap(run_process(spec)), spec.limits);
-    build.sandbox.end_runs();
-    return step;
+    const std::vector<BuildStep> steps = run_steps(build, specs);
+    std::map<std::string, BuildStep> by_lab;
+    for (std::size_t i = 0; i < labs.size(); ++i) by_lab[labs[i]] = steps[i];
+    return by_lab;
+}
+
+std::map<std::string, BuildStep> link_workers(const WorkerBuild& build, const std::vector<WorkerParts>& workers,
+                                              const std::vector<std::string>& all_labs) {
+    std::vector<ProcessSpec> specs;
+    for (const WorkerParts& worker : workers) {
+        std::vector<std::string> argv = {build.kit.compiler.string()};
+        argv.insert(argv.end(), build.kit.compile_arguments.begin(), build.kit.compile_arguments.end());
+        argv.push_back(build.kit.main_object.string());
+        for (const std::string& lab : all_labs) {
+            if (std::find(worker.own_labs.begin(), worker.own_labs.end(), lab) != worker.own_labs.end()) argv.push_back(lab + ".o");
+            else argv.push_back(build.kit.remote_objects.at(lab).string());
+        }
+        for (const fs::path& library : build.kit.libraries) argv.push_back(library.string());
+        argv.insert(argv.end(), build.kit.link_arguments.begin(), build.kit.link_arguments.end());
+        argv.insert(argv.end(), {"-o", worker.name});
+        specs.push_back(fenced(build, std::move(argv)));
+    }
+    const std::vector<BuildStep> steps = run_steps(build, specs);
+    std::map<std::string, BuildStep> by_name;
+    for (std::size_t i = 0; i < workers.size(); ++i) by_name[workers[i].name] = steps[i];
+    return by_name;
 }
 
 void take_program(const fs::path& built, const fs::path& destination) {

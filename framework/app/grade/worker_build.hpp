@@ -34,9 +34,15 @@ struct WorkerBuild {
 /// Compiles labs/<lab>.cpp to <lab>.o for each lab, `jobs` at a time; returns each lab's step.
 std::map<std::string, BuildStep> compile_labs(const WorkerBuild& build, const std::vector<std::string>& labs);
 
-/// Links the worker `name` from the student's objects of `own_labs` and the kit's remote objects for the other labs.
-BuildStep link_worker(const WorkerBuild& build, const std::string& name, const std::vector<std::string>& own_labs,
-                      const std::vector<std::string>& all_labs);
+/// A worker program: its file name and the labs whose student objects it links.
+struct WorkerParts {
+    std::string name;                  // "worker_03_blinn_phong"
+    std::vector<std::string> own_labs; // the rest of `all_labs` comes from the kit's remote objects
+};
+
+/// Links each worker, `jobs` at a time; returns each one's step by name.
+std::map<std::string, BuildStep> link_workers(const WorkerBuild& build, const std::vector<WorkerParts>& workers,
+                                              const std::vector<std::string>& all_labs);
 
 /// Copies the program the student's user built (`built`) to `destination`, which
 /// that user cannot change, reading it without following links or blocking.
