@@ -5,6 +5,8 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <fcntl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace whitted::grade {
@@ -70,6 +72,25 @@ bool write_text(const fs::path& file, const std::string& text) {
 
 std::string group_name() { return "whitted-grade-" + std::to_string(getpid()); }
 
+// Whether a new process can join the group (a kernel may refuse, as v2 does for some groups): one tries.
+bool can_join(const std::vector<fs::path>& join_files) {
+    std::vector<int> fds;
+    for (const fs::path& file : join_files) fds.push_back(open(file.c_str(), O_WRONLY | O_CLOEXEC));
+    bool opened = true;
+    for (const int fd : fds) opened &= fd >= 0;
+    pid_t child = opened ? fork() : -1;
+    if (child == 0) {
+        for (const int fd : fds)
+            if (write(fd, "0", 1) != 1) _exit(1);
+        _exit(0);
+    }
+    int status = 0;
+    const bool joined = child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    for (const int fd : fds)
+        if (fd >= 0) close(fd);
+    return joined;
+}
+
 } // namespace
 
 std::optional<ControlGroup> ControlGroup::make(std::size_t memory_bytes, long max_processes, std::string& problem) {
@@ -102,6 +123,10 @@ std::optional<ControlGroup> ControlGroup::make(std::size_t memory_bytes, long ma
             problem = "no cgroup: cannot set the group's ceilings";
             return std::nullopt;
         }
+        if (!can_join(group.join_files())) {
+            problem = "no cgroup: a process cannot join the group made for it";
+            return std::nullopt;
+        }
         return group;
     }
     // v2: a child of our own group if its controllers are delegated, else a sibling.
@@ -118,7 +143,7 @@ std::optional<ControlGroup> ControlGroup::make(std::size_t memory_bytes, long ma
             if (fs::exists(folder / "memory.max") && fs::exists(folder / "pids.max") && write_text(folder / "pids.max", std::to_string(max_processes))) {
                 group.kind_ = "cgroup v2";
                 group.folders_.push_back(folder);
-                if (group.set_memory(memory_bytes)) return group;
+                if (group.set_memory(memory_bytes) && can_join(group.join_files())) return group;
                 group.folders_.clear();
             }
             fs::remove(folder, error);
