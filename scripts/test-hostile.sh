@@ -21,7 +21,8 @@
 #                 solution, forging the checker's report from its command
 #                 line, a main() of its own with fake tests, reading the
 #                 answers, asm(".incbin") of a secret, running the reference
-#                 renderer and the checker;
+#                 renderer and the checker, writing over the link's shared
+#                 memory, an exception dressed as the checker's own words;
 # and once: files (lab files that are links to the solution and to a secret, a
 # FIFO, a folder, an oversized file, #include "/dev/zero") and a labs/ folder
 # that is a link to the solution.
@@ -149,6 +150,8 @@ ok(open(folder + "/results.json").read(1) == "{", "results.json was overwritten"
         02_shadows spawn_ray "$forge" \
         02_shadows is_lit "$overwrite" \
         04_reflection mirror_direction "$read_secrets" \
+        04_reflection reflection '#include <sys/mman.h> #include <cstring> static const bool corrupted = [] { void* ring = mmap(nullptr, 4096, PROT_READ | PROT_WRITE, MAP_SHARED, 3, 0); if (ring != MAP_FAILED) std::memset(ring, 0xff, 4096); return true; }(); (void)corrupted;' \
+        06_fresnel fresnel_blend '#include <stdexcept> throw std::runtime_error("fake\ngrading link broken: the worker said goodbye\n[       OK ] FresnelBlend.Fake (0 ms)");' \
         06_fresnel fresnel_reflectance '#include <cstdio> #include <cstdlib> static const bool ran = [] { for (const char* command : {"'"$tree/$build"'/whitted render '"$tree"'/scenes/whitted_1980.p3f -o hostile-render.png", "'"$checker"' --gtest_list_tests"}) std::printf(std::system(command) == 0 ? "RAN the reference\n" : "could not run the reference\n"); return true; }(); (void)ran;'
     printf '#include "../../solution/01_ray_casting.cpp"\n#include "%s/solution/01_ray_casting.cpp"\n' "$tree" | cat - labs/01_ray_casting.cpp > "$work/redteam-$mode-labs/01_ray_casting.cpp"
     printf '#include <cstdio>\nint main() { std::puts("BlinnPhong.\\n  Fake"); return 0; }\n' >> "$work/redteam-$mode-labs/03_blinn_phong.cpp"
@@ -163,7 +166,9 @@ ok(statuses("05_refraction") == {"compile_error"}, ".incbin of a secret compiled
 ok(shown("02_shadows", "checkers seen:"), "the forging attack did not run")
 ok(shown("02_shadows", "could not overwrite"), "the overwriting attack did not run")
 ok(shown("04_reflection", "could not read"), "the reading attack did not run")
-ok(shown("06_fresnel", "could not run"), "the running attack did not run")'
+ok(shown("06_fresnel", "could not run"), "the running attack did not run")
+ok(shown("04_reflection", "the grading link broke: the other side broke the link"), "writing over the link: the broken link not named")
+ok("crash" not in statuses("06_fresnel"), "an exception dressed as checker output: " + str(statuses("06_fresnel")))'
     chmod "$tree_mode" "$tree"
 done
 

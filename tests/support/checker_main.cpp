@@ -5,7 +5,8 @@
 //   check_<lab> --worker=PROGRAM [gtest options]     start the worker here (CTest, by hand)
 //
 // WHITTED_REMOTE_LABS (a compile definition) is the set of labs the worker
-// answers, as bits 1..6. Exit code: GoogleTest's (0 all passed, 1 a failure), or
+// answers, as bits 1..6. With WHITTED_LINK_REPORT=<file> in the environment, a
+// broken link's reason is also written to that file (for the grader). Exit code: GoogleTest's (0 all passed, 1 a failure), or
 // 3 when the link broke (the worker died, stalled, or broke the protocol) or
 // the worker ended badly: then no test of this run may count as passed.
 #include "lab_link.hpp"
@@ -67,7 +68,15 @@ WorkerProcess start_worker(const char* program) {
 bool ended_well(const Link& link, const WorkerProcess& worker) {
     std::fflush(stdout);
     bool well = link.broken().empty();
-    if (!well) std::fprintf(stderr, "grading link broken: %s\n", link.broken().c_str());
+    if (!well) {
+        std::fprintf(stderr, "grading link broken: %s\n", link.broken().c_str());
+        // For the grader, apart from the output, which also carries what the worker's exceptions said.
+        if (const char* report = std::getenv("WHITTED_LINK_REPORT"); report && *report)
+            if (FILE* file = std::fopen(report, "w")) {
+                std::fprintf(file, "%s\n", link.broken().c_str());
+                std::fclose(file);
+            }
+    }
     if (worker.pid > 0) {
         int status = 0;
         int waited_ms = 0;

@@ -138,11 +138,14 @@ void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& lim
 }
 
 void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const ProcessRun& worker, const Limits& limits,
-                   const std::filesystem::path& report_file) {
-    // What the checker said about the link, when it broke.
+                   const std::filesystem::path& report_file, const std::filesystem::path& link_file) {
+    // What the checker said about the link, when it broke: its own file, not its output (which carries the worker's words).
     std::string link_problem;
-    for (const std::string& line : split_lines(checker.output))
-        if (line.rfind("grading link broken: ", 0) == 0) link_problem = line.substr(21);
+    try {
+        const std::vector<std::string> lines = split_lines(read_regular_file(link_file, 4096));
+        if (!lines.empty()) link_problem = lines.front();
+    } catch (const std::exception&) {
+    }
     if (checker.end == ProcessRun::End::timed_out || worker.end == ProcessRun::End::timed_out) {
         outcome.status = Status::timeout;
         outcome.message = describe(worker.end == ProcessRun::End::timed_out ? worker : checker, limits);

@@ -21,8 +21,9 @@ void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& lim
 /// worker's ending comes first (a crash, a timeout, code that went on running
 /// or exited early is never a pass, whatever the checker says), then the
 /// checker's verdict. The worker's output follows the details, marked as such.
+/// `link_file` is where the checker wrote why the link broke, if it did.
 void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const ProcessRun& worker, const Limits& limits,
-                   const std::filesystem::path& report_file);
+                   const std::filesystem::path& report_file, const std::filesystem::path& link_file);
 
 /// Every test GoogleTest's JSON report records, with true for those that passed
 /// (no failure); empty if the file is missing, unreadable or not a report.

@@ -82,6 +82,7 @@ std::pair<ProcessRun, ProcessRun> run_checked(const TestProgram& program, const 
                                      folder);
     check.limits = limits;
     if (together) check.environment = {{"WHITTED_TOGETHER", "1"}, {"GTEST_COLOR", "no"}}; // image tests fail at once
+    check.environment.emplace_back("WHITTED_LINK_REPORT", (folder / "link.txt").string());
     check.limits.output_bytes = std::max<std::size_t>(limits.output_bytes, 64 * 1024);
     check.descriptors = {channel.checker.memory, channel.checker.wake_in, channel.checker.wake_out};
     ProcessSpec work;
@@ -105,7 +106,7 @@ TestOutcome run_test(const TestProgram& program, const std::string& test_name) {
     TestOutcome outcome;
     outcome.lab = program.lab;
     outcome.name = test_name;
-    classify_pair(outcome, checker, worker, program.limits, folder / "gtest.json");
+    classify_pair(outcome, checker, worker, program.limits, folder / "gtest.json", folder / "link.txt");
     outcome.message = replace_paths(outcome.message, program.path_replacements);
     outcome.output = trim_text(replace_paths(outcome.output, program.path_replacements), 60);
     outcome.image = read_image_numbers(folder / "image.json");
