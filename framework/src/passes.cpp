@@ -115,7 +115,9 @@ Color pass_pixel(Pass pass, const Scene& scene, const RenderSettings& settings, 
         const Material& material = scene.material(hit);
         return material.diffuse * material.color_at(hit.point);
     }
-    case Pass::shadow: return shadow_pixel(probe.feelers, hit);
+    case Pass::shadow:
+        probe.feelers.begin_pixel(); // its own budget for this pixel's feelers: it never runs trace_pixel()
+        return shadow_pixel(probe.feelers, hit);
     case Pass::fresnel: return fresnel_pixel(scene, eye);
     case Pass::object_id: {
         const Primitive& primitive = scene.primitives()[hit.primitive];

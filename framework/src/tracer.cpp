@@ -82,10 +82,14 @@ Color Tracer::shade(const Ray& ray, int depth) const {
     return color;
 }
 
-Color Tracer::trace_pixel(double x, double y) const {
+void Tracer::begin_pixel() const {
     path_weight_ = Color(1.0);
     pixel_rays_ = 0;
     pixel_cut_short_ = false;
+}
+
+Color Tracer::trace_pixel(double x, double y) const {
+    begin_pixel();
     if (tree_) tree_->clear();
     current_node_ = -1;
     const Color color = trace(primary_ray(scene_.camera(), x, y), 1, RayKind::eye, Color(1.0));

@@ -94,6 +94,27 @@ TEST(Passes, ShadowIsBlackWhereABlockerHidesTheOnlyLight) {
     EXPECT_GT(white, kSize * kSize / 4);
 }
 
+TEST(Passes, ShadowFeelersGetABudgetPerPixelNotPerImage) {
+    // A floor lit from straight above, nothing in between: every pixel that sees
+    // the floor is white. The budget of rays per pixel (here 3) must start again
+    // at each pixel; spent once for the whole image (one thread: 21 x 21 = 441
+    // feelers), the pixels after the third would read "blocked", black.
+    SceneData data;
+    data.camera = Camera::create(Point3(0.0, 6.0, 6.0), Point3(0.0), Vec3(0.0, 1.0, 0.0), 60.0, kSize, kSize);
+    data.lights = {PointLight{Point3(0.0, 50.0, 0.0), Color(1.0)}};
+    data.materials = {diffuse_material(Color(1.0))};
+    data.primitives.push_back({Plane{Point3(0.0), Vec3(0.0, 1.0, 0.0)}, 0});
+    const Scene scene{std::move(data)};
+    RenderSettings settings;
+    settings.stage = 2;
+    settings.max_rays_per_pixel = 3;
+    const PassResult result = render_pass(scene, settings, Pass::shadow, 1);
+    int black = 0;
+    for (const Color& c : result.render.image.pixels) black += c == Color(0.0);
+    EXPECT_EQ(black, 0) << "pixels read as in shadow under an open sky";
+    EXPECT_EQ(result.render.stats.pixels_cut_short, 0u);
+}
+
 TEST(Passes, ShadowIsGreyWhereOneOfTwoLightsIsHidden) {
     // As above, plus a second light at (5, 5, 0) that the ball does not hide
     // from the origin: one light of two reaches it, grey 0.5.

@@ -73,6 +73,11 @@ class Tracer {
     /// The colour of the pixel sample at viewport position (x, y) (see primary_ray).
     Color trace_pixel(double x, double y) const;
 
+    /// Starts a new pixel: its ray budget, path weight and cut-short mark from
+    /// the start. trace_pixel() does this itself; code that casts a pixel's rays
+    /// another way (the shadow pass's feelers) calls it at each pixel.
+    void begin_pixel() const;
+
     /// True when something lies along the shadow feeler `ray` with 0 < t < distance.
     /// The range stops a hair (a millionth) short of `distance`, so that a surface
     /// passing through the light itself (a lamp on a wall) does not shadow it.
