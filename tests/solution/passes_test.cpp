@@ -27,6 +27,16 @@ SceneData looking_at(const Material& material, double radius = 1.0) {
 Color centre(const PassResult& result) { return result.render.image.at(kSize / 2, kSize / 2); }
 Color corner(const PassResult& result) { return result.render.image.at(0, 0); }
 
+// The camera looks down at the origin of the white floor y = 0, lit by one light at `light`.
+SceneData lit_floor(const Point3& light) {
+    SceneData data;
+    data.camera = Camera::create(Point3(0.0, 6.0, 6.0), Point3(0.0), Vec3(0.0, 1.0, 0.0), 60.0, kSize, kSize);
+    data.lights = {PointLight{light, Color(1.0)}};
+    data.materials = {diffuse_material(Color(1.0))};
+    data.primitives.push_back({Plane{Point3(0.0), Vec3(0.0, 1.0, 0.0)}, 0});
+    return data;
+}
+
 PassResult run(const SceneData& data, Pass pass, int stage = 6, int threads = 1) {
     const Scene scene{SceneData(data)};
     RenderSettings settings;
@@ -78,14 +88,10 @@ TEST(Passes, AlbedoIsKdTimesTheColour) {
 }
 
 TEST(Passes, ShadowIsBlackWhereABlockerHidesTheOnlyLight) {
-    // The camera looks down at the origin of the floor y = 0; the light is straight
-    // above at (0, 5, 0) and a ball at (0, 2.5, 0) hides it from the origin.
-    // Far from the origin the floor sees the light: white somewhere.
-    SceneData data;
-    data.camera = Camera::create(Point3(0.0, 6.0, 6.0), Point3(0.0), Vec3(0.0, 1.0, 0.0), 60.0, kSize, kSize);
-    data.lights = {PointLight{Point3(0.0, 5.0, 0.0), Color(1.0)}};
-    data.materials = {diffuse_material(Color(1.0))};
-    data.primitives.push_back({Plane{Point3(0.0), Vec3(0.0, 1.0, 0.0)}, 0});
+    // The light is straight above the floor's origin at (0, 5, 0) and a ball at
+    // (0, 2.5, 0) hides it from the origin. Far from the origin the floor sees the
+    // light: white somewhere.
+    SceneData data = lit_floor(Point3(0.0, 5.0, 0.0));
     data.primitives.push_back({Sphere{Point3(0.0, 2.5, 0.0), 0.5}, 0});
     const PassResult result = run(data, Pass::shadow, 2);
     EXPECT_EQ(centre(result), Color(0.0));
@@ -99,12 +105,7 @@ TEST(Passes, ShadowFeelersGetABudgetPerPixelNotPerImage) {
     // the floor is white. The budget of rays per pixel (here 3) must start again
     // at each pixel; spent once for the whole image (one thread: 21 x 21 = 441
     // feelers), the pixels after the third would read "blocked", black.
-    SceneData data;
-    data.camera = Camera::create(Point3(0.0, 6.0, 6.0), Point3(0.0), Vec3(0.0, 1.0, 0.0), 60.0, kSize, kSize);
-    data.lights = {PointLight{Point3(0.0, 50.0, 0.0), Color(1.0)}};
-    data.materials = {diffuse_material(Color(1.0))};
-    data.primitives.push_back({Plane{Point3(0.0), Vec3(0.0, 1.0, 0.0)}, 0});
-    const Scene scene{std::move(data)};
+    const Scene scene{lit_floor(Point3(0.0, 50.0, 0.0))};
     RenderSettings settings;
     settings.stage = 2;
     settings.max_rays_per_pixel = 3;
