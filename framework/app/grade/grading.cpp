@@ -77,13 +77,13 @@ public:
         if (std::optional<ControlGroup> group = ControlGroup::make(compile_memory(), sandbox_.processes, no_group)) {
             group_.emplace(std::move(*group));
             sandbox_.groups = group_->join_files();
-            sandbox_.description += ", a " + group_->kind() + " for all its processes together (" + mebibytes(compile_memory()) +
-                                    " while compiling, " + mebibytes(setup_.test_limits.address_space) + " while tested, " +
-                                    std::to_string(sandbox_.processes) + " processes)";
+            sandbox_.fences.push_back("a " + group_->kind() + " for all its processes together (" + mebibytes(compile_memory()) +
+                                      " while compiling, " + mebibytes(setup_.test_limits.address_space) + " while tested, " +
+                                      std::to_string(sandbox_.processes) + " processes)");
         } else {
-            sandbox_.description += "; " + no_group + " (the memory ceiling is per process)";
+            sandbox_.gaps.push_back(no_group + " (the memory ceiling is per process)");
         }
-        setup_.progress(sandbox_.description);
+        setup_.progress(sandbox_.description());
         if (!sandbox_.bwrap_error.empty()) setup_.progress("bwrap said: " + sandbox_.bwrap_error);
         return sandbox_;
     }
@@ -283,7 +283,7 @@ GradingResult grade_submission(const GradingSetup& setup) {
 
     LabGrader grader(setup, refused);
     GradingResult result;
-    result.fences = grader.prepare().description;
+    result.fences = grader.prepare().description();
     grader.build_workers(labs);
     for (const LabRubric& lab : setup.rubric.labs) {
         result.labs.push_back(grader.grade(lab));

@@ -85,9 +85,9 @@ ProcessRun Sandbox::unwrap(ProcessRun run) const {
 Sandbox make_sandbox(SandboxChoice choice, const std::vector<fs::path>& secrets, const fs::path& scratch, long max_processes,
                      bool allow_exposed) {
     Sandbox sandbox;
-    std::vector<std::string> fences = {"resource limits", "a process group per run", "leftover processes killed",
-                                       "the verdict in a separate checker process"};
-    std::vector<std::string> missing;
+    std::vector<std::string>& fences = sandbox.fences;
+    fences = {"resource limits", "a process group per run", "leftover processes killed", "the verdict in a separate checker process"};
+    std::vector<std::string>& missing = sandbox.gaps;
     const bool root = geteuid() == 0;
     if (root) {
         sandbox.identity = fresh_identity();
@@ -141,11 +141,15 @@ Sandbox make_sandbox(SandboxChoice choice, const std::vector<fs::path>& secrets,
             fences.push_back("the answers unreadable to other users (probed)");
         }
     }
-    std::string text = std::string(sandbox.bubblewrap ? "sandbox" : sandbox.exposed.empty() ? "users" : "exposed") + " mode: ";
-    for (std::size_t i = 0; i < fences.size(); ++i) text += (i ? ", " : "") + fences[i];
-    for (const std::string& gap : missing) text += "; " + gap;
-    sandbox.description = text;
+    sandbox.mode = sandbox.bubblewrap ? "sandbox" : sandbox.exposed.empty() ? "users" : "exposed";
     return sandbox;
+}
+
+std::string Sandbox::description() const {
+    std::string text = mode + " mode: ";
+    for (std::size_t i = 0; i < fences.size(); ++i) text += (i ? ", " : "") + fences[i];
+    for (const std::string& gap : gaps) text += "; " + gap;
+    return text;
 }
 
 void give_folder(const Sandbox& sandbox, const fs::path& folder) {

@@ -41,7 +41,9 @@ struct Sandbox {
     long processes = 0;               // RLIMIT_NPROC for the student's code; 0: none
     std::vector<std::filesystem::path> groups; // cgroup.procs files of the grading's control group, if it has one
     std::vector<std::string> bwrap_prefix; // bwrap and its options for the system folders
-    std::string description;               // one line for the instructor, without paths: which fences are up
+    std::string mode;                      // "sandbox", "users" or "exposed"
+    std::vector<std::string> fences;       // for the instructor, without paths: the fences that are up
+    std::vector<std::string> gaps;         // for the instructor: the fences that are not, and why
     std::string exposed;                   // for the instructor: what the student's code could read, or empty
     std::string bwrap_error;               // for the instructor: what bwrap said when it failed
 
@@ -53,6 +55,9 @@ struct Sandbox {
     /// group and of its user (when it has them), then whatever is left among
     /// the grader's children.
     void end_runs() const;
+
+    /// One line for the instructor: "sandbox mode: fence, fence; gap".
+    std::string description() const;
 
     /// How the wrapped program ended: bubblewrap reports a program killed by
     /// signal S as exit code 128 + S, which becomes the signal again.
