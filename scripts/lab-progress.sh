@@ -40,6 +40,8 @@ for n in 1 2 3 4 5 6; do
         [ -n "$unfinished" ] || unfinished=$n
     fi
 done
+# The failed tests whose output says a lab function is not implemented yet: they wait for a lab, they are not broken.
+waiting=$(awk '/^[0-9]+\/[0-9]+ Test: / { name = $3 } /is not implemented yet/ && name != "" { print name; name = "" }' "$log" 2>/dev/null | sort -u)
 for group in framework integration cli; do
     lines=$(grep -E "Test +#[0-9]+: $group\." Testing/progress.log)
     total=$(printf '%s\n' "$lines" | grep -c . || true)
@@ -47,10 +49,15 @@ for group in framework integration cli; do
     # A skipped test (one that cannot run here, e.g. a file-permission check as root) is no failure.
     skipped=$(printf '%s\n' "$lines" | grep -c '\*\*\*Skipped' || true)
     [ "$total" -gt 0 ] || continue
+    failed_names=$(printf '%s\n' "$lines" | grep -vE ' Passed |\*\*\*Skipped' | sed -E 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/')
+    wait_count=0
+    [ -n "$waiting" ] && [ -n "$failed_names" ] && wait_count=$(printf '%s\n' "$failed_names" | grep -cxF -f <(printf '%s\n' "$waiting") || true)
     mark="  "
     [ $((passed + skipped)) -eq "$total" ] && mark="ok"
     note=""
-    [ "$skipped" -gt 0 ] && note=", $skipped skipped here (see ctest -L $group)"
+    [ "$skipped" -gt 0 ] && note=", $skipped skipped here"
+    [ "$wait_count" -gt 0 ] && note="$note, $wait_count wait for a lab that is not done yet"
+    [ -n "$note" ] && note="$note (ctest -R '^$group\.' lists them)"
     printf '%s %s: %d/%d tests pass%s\n' "$mark" "$group" "$passed" "$total" "$note"
 done
 echo
