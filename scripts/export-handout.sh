@@ -25,5 +25,7 @@ printf '%s\n' "$files" | grep -vE "$private" | while IFS= read -r file; do
     cp -p "$file" "$out/$file"
 done
 cp docs/handout/README.md "$out/README.md"
+# The Makefile's header lists instructor commands and documents; the student's lists what the handout has.
+{ cat docs/handout/makefile-header.txt; sed '1,/^[^#]/{/^#/d}' Makefile; } > "$out/Makefile"
 echo "handout written to $out ($(find "$out" -type f | wc -l) files)"
 echo "check it: cd $out && make test   (every lab's tests fail until its stubs are replaced)"

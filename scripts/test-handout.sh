@@ -19,6 +19,10 @@ done
 # The handout shares shared/ with the instructor tree, for the SPD scenes.
 [ -d "$root/../shared" ] && ln -s "$root/../shared" "$work/shared"
 cd "$handout"
+# The Makefile's header speaks of what the handout has: no instructor commands, no documents it lacks.
+if sed '/^[^#]/,$d' Makefile | grep -nE "make (handout|proofs|references|test-grader|test-hostile|test-report|fuzz|bench)|docs/"; then
+    fail "the handout's Makefile names instructor commands or documents the handout does not have"
+fi
 
 echo "test-handout: 1. make test with the untouched stubs"
 if make test > "$work/test1.log" 2>&1; then fail "make test passed with stubs"; fi
