@@ -72,19 +72,34 @@ TEST(HtmlReport, ListsFailuresFirstAndLoadsNothingFromOutside) {
 }
 
 // A hidden test's pictures would show the student its secret scene and reference.
-TEST(HtmlReport, ShowsNoPictureOfAHiddenTest) {
+// Bytes that are not UTF-8 (printed by the student's code, or in a compiler's
+// message) must not stop results.json from being written.
+TEST(ResultsJson, OutputThatIsNotUtf8StillGivesValidJson) {
+    GradingResult result = sample();
+    result.labs[0].tests[1].outcome.output = "printed \xff\xfe by the student";
+    result.labs[0].compile_errors = "error: \xff";
+    const std::string text = results_json(result);
+    EXPECT_FALSE(nlohmann::json::parse(text, nullptr, false).is_discarded()) << text;
+}
+
+TEST(HtmlReport, ShowsNothingOfAHiddenTestButItsStatus) {
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("reports_test_" + std::to_string(getpid()));
     std::filesystem::create_directories(folder);
     std::ofstream(folder / "yours.png") << "not really a PNG";
     GradingResult result = sample();
     result.labs[0].tests[0].outcome.pictures = folder;
     result.labs[0].tests[1].outcome.pictures = folder;
+    result.labs[0].tests[1].outcome.output = "expected (0.0989, 0.2227) SECRET-INPUTS";
+    result.labs[0].tests[1].outcome.image = ImageNumbers{};
     const std::string html = html_report(result);
     std::filesystem::remove_all(folder);
     std::size_t pictures = 0;
     for (std::size_t at = html.find("<img"); at != std::string::npos; at = html.find("<img", at + 1)) ++pictures;
     EXPECT_EQ(pictures, 1u) << "only the visible test's yours.png";
-    EXPECT_NE(html.find("The pictures of hidden tests are not shown."), std::string::npos);
+    EXPECT_NE(html.find("The details of hidden tests are not shown."), std::string::npos);
+    EXPECT_EQ(html.find("SECRET-INPUTS"), std::string::npos) << "a hidden test's output";
+    EXPECT_EQ(html.find("spawn_ray() is not implemented"), std::string::npos) << "a hidden test's message";
+    EXPECT_EQ(html.find("image gate"), std::string::npos) << "a hidden test's image numbers";
 }
 
 TEST(Text, PathsBecomeRelativeLongestFirst) {

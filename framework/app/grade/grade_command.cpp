@@ -102,6 +102,9 @@ int run_grade(const GradeOptions& options) {
     fs::permissions(setup.out, fs::perms::owner_all);
     write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/ and tests/ here\n");
     fs::remove_all(setup.out / "build"); // left by graders before the checker/worker split
+    // An earlier grading's results must never pass for this one's, whatever happens below.
+    fs::remove(setup.out / "results.json");
+    fs::remove(setup.out / "report.html");
     setup.allow_exposed_answers = options.allow_exposed_answers;
     setup.test_limits.wall_seconds = options.timeout;
     setup.test_limits.cpu_seconds = 2 * options.timeout; // the image tests render with two threads

@@ -14,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <unistd.h>
 
 namespace whitted::grade {
 namespace {
@@ -54,6 +55,15 @@ public:
         : setup_(setup), refused_(refused), paths_(shown_paths(setup)),
           deadline_(Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(setup.budget_seconds))) {}
 
+    LabGrader(const LabGrader&) = delete;
+    LabGrader& operator=(const LabGrader&) = delete;
+    // What the student's code left where every user may write, once none of its processes is left.
+    ~LabGrader() {
+        if (!sandbox_.identity) return;
+        sandbox_.end_runs();
+        remove_user_leftovers(sandbox_.identity->uid);
+    }
+
     /// The instructor build brought up to date, the kit staged, the fences set up.
     const Sandbox& prepare() {
         setup_.progress("updating the checkers and the grading kit in " + setup_.instructor_build.string());
@@ -93,10 +103,15 @@ public:
         const fs::path build = setup_.work / "build";
         fs::create_directories(build / "labs");
         for (const std::string& lab : labs) fs::copy_file(setup_.out / "labs" / (lab + ".cpp"), build / "labs" / (lab + ".cpp"));
-        fs::permissions(build / "labs", fs::perms(0755));
         fs::create_directories(setup_.work / "workers");
-        fs::permissions(setup_.work / "workers", fs::perms(0755));
+        // With a user of the grading's own, the submission's files and programs are that user's alone: another
+        // grading running at once (another user) must not read them.
+        const fs::perms shared = sandbox_.identity ? fs::perms(0700) : fs::perms(0755);
+        fs::permissions(build / "labs", shared);
+        fs::permissions(build, shared);
+        give_folder(sandbox_, build / "labs");
         give_folder(sandbox_, build);
+        share_with_student_code(setup_.work / "workers", 0750);
         const WorkerBuild worker_build{kit_, sandbox_, build, setup_.jobs, deadline_};
         setup_.progress("compiling the lab files");
         const std::map<std::string, BuildStep> compiled = compile_labs(worker_build, labs);
@@ -125,6 +140,7 @@ public:
             }
             try {
                 take_program(build / worker.name, setup_.work / "workers" / worker.name);
+                share_with_student_code(setup_.work / "workers" / worker.name, 0750);
             } catch (const std::exception& e) {
                 failures_[name] = {Status::compile_error, std::string("the worker of ") + name + " " + e.what(), ""};
             }
@@ -223,6 +239,14 @@ private:
     };
 
     using Clock = std::chrono::steady_clock;
+
+    // Makes a file of the grader's readable (and runnable) by the student code's user alone, not changeable by it.
+    void share_with_student_code(const fs::path& path, unsigned mode) const {
+        if (!sandbox_.identity) return fs::permissions(path, fs::perms(mode | 0005));
+        if (chown(path.c_str(), 0, sandbox_.identity->gid) != 0)
+            throw GraderFailure("cannot give " + path.string() + " to the student code's group");
+        fs::permissions(path, fs::perms(mode));
+    }
 
     // The control group's ceiling while `--jobs` compilers run.
     std::size_t compile_memory() const { return static_cast<std::size_t>(std::max(setup_.jobs, 1)) * kCompilerMemory; }

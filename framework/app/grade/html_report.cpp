@@ -87,12 +87,15 @@ std::string test_card(const LabResult& lab, const ScoredTest& test, const std::s
                        format_points(test.max_cents) + "</span><span class=\"badge " + std::string(status_name(o.status)) +
                        "\">" + std::string(status_label(o.status)) + "</span><b>" + escape(o.name) + "</b> &middot; " +
                        escape(lab.title) + (is_hidden(o.name) ? " &middot; <i>hidden test</i>" : "") + "\n";
+    // The student sees this page: a hidden test's message, output, image numbers or pictures would tell its
+    // inputs, its expected values or its reference picture.
+    if (is_hidden(o.name)) {
+        if (o.status != Status::passed) html += "<p>The details of hidden tests are not shown.</p>\n";
+        return html + "</div>\n";
+    }
     if (!o.message.empty()) html += "<p>" + escape(o.message) + "</p>\n";
     if (o.image) html += "<p>" + escape(image_summary(*o.image)) + "</p>\n";
-    // A hidden test's pictures would show its scene and its reference: the student sees this page.
-    if (!o.pictures.empty() && is_hidden(o.name)) {
-        html += "<p>The pictures of hidden tests are not shown.</p>\n";
-    } else if (!o.pictures.empty()) {
+    if (!o.pictures.empty()) {
         html += "<div>" + figure(o.pictures / "yours.png", "yours") + figure(o.pictures / "reference.png", "reference") +
                 figure(o.pictures / "diff.png", "difference &times;16") + figure(o.pictures / "heat.png", "heat map") + "</div>\n";
     }

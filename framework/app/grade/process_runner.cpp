@@ -14,7 +14,11 @@
 #include <grp.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/ipc.h>
+#include <sys/msg.h>
 #include <sys/prctl.h>
+#include <sys/sem.h>
+#include <sys/shm.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -337,6 +341,42 @@ void kill_user_processes(unsigned uid) {
         _exit(0);
     }
     if (killer > 0) waitpid(killer, nullptr, 0);
+}
+
+int remove_user_leftovers(unsigned uid) {
+    int removed = 0;
+    for (const char* shared : {"/tmp", "/var/tmp", "/dev/shm"}) {
+        std::error_code error;
+        for (const std::filesystem::directory_entry& entry : std::filesystem::directory_iterator(shared, error)) {
+            struct stat info {};
+            if (lstat(entry.path().c_str(), &info) != 0 || info.st_uid != uid) continue;
+            std::error_code ignored;
+            removed += std::filesystem::remove_all(entry.path(), ignored) > 0; // links are removed, never followed
+        }
+    }
+    // /proc/sysvipc/{shm,msg,sem}: a header line, then one object a line; the id is the second field, the owner's uid
+    // the eighth (shm, msg) or fifth (sem).
+    struct Kind {
+        const char* file;
+        int uid_field;
+        int (*remove)(int id);
+    };
+    const Kind kinds[] = {{"/proc/sysvipc/shm", 8, [](int id) { return shmctl(id, IPC_RMID, nullptr); }},
+                          {"/proc/sysvipc/msg", 8, [](int id) { return msgctl(id, IPC_RMID, nullptr); }},
+                          {"/proc/sysvipc/sem", 5, [](int id) { return semctl(id, 0, IPC_RMID); }}};
+    for (const Kind& kind : kinds) {
+        std::ifstream file(kind.file);
+        std::string line;
+        std::getline(file, line);
+        while (std::getline(file, line)) {
+            std::istringstream fields(line);
+            std::vector<long long> values;
+            for (long long value; values.size() < 8 && fields >> value;) values.push_back(value);
+            if (static_cast<int>(values.size()) < kind.uid_field || values[static_cast<std::size_t>(kind.uid_field - 1)] != uid) continue;
+            removed += kind.remove(static_cast<int>(values[1])) == 0;
+        }
+    }
+    return removed;
 }
 
 long processes_of_user(unsigned uid) {

@@ -87,6 +87,11 @@ int kill_leftover_children();
 /// bomb's processes leave their group faster than a scan of /proc finds them.
 void kill_user_processes(unsigned uid);
 
+/// Removes what the user `uid` left where every user may write (/tmp, /var/tmp,
+/// /dev/shm: the entries it owns there) and its System V shared memory, message
+/// queues and semaphores. Call once its processes are gone. Returns how many.
+int remove_user_leftovers(unsigned uid);
+
 /// The number of processes and threads the user owns now (what RLIMIT_NPROC counts).
 long processes_of_user(unsigned uid);
 

@@ -80,7 +80,8 @@ std::string results_json(const GradingResult& result, const std::string& problem
             root["tests"].push_back(entry);
         }
     }
-    return root.dump(2) + "\n";
+    // What the student's code printed and the compiler said may hold any bytes: invalid UTF-8 becomes U+FFFD.
+    return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 } // namespace whitted::grade
