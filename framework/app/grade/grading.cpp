@@ -128,19 +128,19 @@ public:
         }
         if (all_compiled) workers.push_back({"integration", labs});
         else failures_["integration"] = {Status::compile_error, "the labs do not build together: not every lab file compiles", ""};
-        for (WorkerParts& worker : workers) worker.name = "worker_" + worker.name;
         setup_.progress("linking the workers");
         const std::map<std::string, BuildStep> linked = link_workers(worker_build, workers, labs);
         for (const WorkerParts& worker : workers) {
-            const std::string name = worker.name.substr(7); // the lab, or "integration"
-            const BuildStep& step = linked.at(worker.name);
+            const std::string& name = worker.name;
+            const std::string program = "worker_" + name;
+            const BuildStep& step = linked.at(name);
             if (!step.ok) {
                 failures_[name] = {Status::compile_error, "the worker of " + name + " does not link", first_compiler_errors(step.log, paths_)};
                 continue;
             }
             try {
-                take_program(build / worker.name, setup_.work / "workers" / worker.name);
-                share_with_student_code(setup_.work / "workers" / worker.name, 0750);
+                take_program(build / program, setup_.work / "workers" / program);
+                share_with_student_code(setup_.work / "workers" / program, 0750);
             } catch (const std::exception& e) {
                 failures_[name] = {Status::compile_error, std::string("the worker of ") + name + " " + e.what(), ""};
             }

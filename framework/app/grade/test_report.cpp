@@ -6,6 +6,7 @@
 
 #include <csignal>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 
@@ -29,17 +30,26 @@ std::optional<json> read_json(const std::filesystem::path& file) {
     return value;
 }
 
-// The failure messages GoogleTest recorded for the test, or empty if it did not record the test.
-std::optional<std::vector<std::string>> recorded_failures(const std::optional<json>& report, const std::string& name) {
-    if (!report) return std::nullopt;
+// Every test GoogleTest's report records, with its failure messages; empty if there is no readable report.
+std::optional<std::map<std::string, std::vector<std::string>>> recorded_tests(const std::filesystem::path& report_file) {
+    const std::optional<json> report = read_json(report_file);
+    if (!report || !report->is_object()) return std::nullopt;
+    std::map<std::string, std::vector<std::string>> tests;
     for (const json& suite : report->value("testsuites", json::array()))
         for (const json& test : suite.value("testsuite", json::array())) {
-            if (suite.value("name", "") + "." + test.value("name", "") != name) continue;
-            std::vector<std::string> failures;
+            std::vector<std::string>& failures = tests[suite.value("name", "") + "." + test.value("name", "")];
             for (const json& failure : test.value("failures", json::array())) failures.push_back(failure.value("failure", ""));
-            return failures;
         }
-    return std::nullopt;
+    return tests;
+}
+
+// The failure messages GoogleTest recorded for the test, or empty if it did not record the test.
+std::optional<std::vector<std::string>> recorded_failures(const std::filesystem::path& report_file, const std::string& name) {
+    const auto tests = recorded_tests(report_file);
+    if (!tests) return std::nullopt;
+    const auto test = tests->find(name);
+    if (test == tests->end()) return std::nullopt;
+    return test->second;
 }
 
 // The test's own output without GoogleTest's banner lines (which hold durations) and without repeated failures.
@@ -107,8 +117,7 @@ void classify_failures(TestOutcome& outcome, const std::vector<std::string>& fai
 } // namespace
 
 void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& limits, const std::filesystem::path& report_file) {
-    const std::optional<json> report = read_json(report_file);
-    const std::optional<std::vector<std::string>> failures = recorded_failures(report, outcome.name);
+    const std::optional<std::vector<std::string>> failures = recorded_failures(report_file, outcome.name);
     if (run.end == ProcessRun::End::timed_out) {
         outcome.status = Status::timeout;
         outcome.message = describe(run, limits);
@@ -183,7 +192,7 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
         return;
     }
     std::string details = link_problem.empty() ? "" : "grading link: " + link_problem + "\n";
-    const std::optional<std::vector<std::string>> failures = recorded_failures(read_json(report_file), outcome.name);
+    const std::optional<std::vector<std::string>> failures = recorded_failures(report_file, outcome.name);
     if (failures)
         for (const std::string& failure : *failures) details += failure + "\n";
     details += "--- what your code printed ---\n" + worker.output;
@@ -192,12 +201,10 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
 }
 
 std::optional<std::map<std::string, bool>> read_test_results(const std::filesystem::path& report_file) {
-    const std::optional<json> report = read_json(report_file);
-    if (!report || !report->is_object()) return std::nullopt;
+    const auto tests = recorded_tests(report_file);
+    if (!tests) return std::nullopt;
     std::map<std::string, bool> results;
-    for (const json& suite : report->value("testsuites", json::array()))
-        for (const json& test : suite.value("testsuite", json::array()))
-            results[suite.value("name", "") + "." + test.value("name", "")] = test.value("failures", json::array()).empty();
+    for (const auto& [name, failures] : *tests) results[name] = failures.empty();
     return results;
 }
 

@@ -70,8 +70,9 @@ fs::path fresh_folder(const fs::path& folder) {
     return folder;
 }
 
-// Runs the checker on the tests `filter` names (`together`: several, image tests failing at once), with the worker in the sandbox and a new link between them;
-// then kills whatever either left running. Returns (checker, worker).
+// Runs the checker on the tests `filter` names (`together`: several, image tests failing at once), with the
+// worker in the sandbox and a new link between them; then kills whatever either left running. Returns
+// (checker, worker).
 std::pair<ProcessRun, ProcessRun> run_checked(const TestProgram& program, const std::string& filter, const fs::path& folder,
                                               const Limits& limits, bool together) {
     // The descriptors go to the two programs: the grader keeps none, so each sees when the other has gone.
@@ -126,8 +127,8 @@ std::set<std::string> passed_together(const TestProgram& program, const std::vec
     limits.wall_seconds = std::min(limits.wall_seconds, wall_seconds);
     limits.cpu_seconds = std::min(limits.cpu_seconds, 2 * limits.wall_seconds);
     const auto [checker, worker] = run_checked(program, filter, folder, limits, true);
-    // Only a run that ended as a run of passing and failing tests ends does: both programs exited by themselves,
-    // the checker with GoogleTest's 0 or 1, the worker with 0 after the checker's goodbye.
+    // Only a clean run counts: both programs exited by themselves, the checker with GoogleTest's 0 or 1, the
+    // worker with 0 after the checker's goodbye.
     const bool clean = checker.end == ProcessRun::End::exited && (checker.exit_code == 0 || checker.exit_code == 1) &&
                        worker.end == ProcessRun::End::exited && worker.exit_code == 0 && !worker.outlived;
     std::set<std::string> passed;
@@ -146,9 +147,7 @@ std::set<std::string> passed_together(const TestProgram& program, const std::vec
 }
 
 fs::path fetch_reference_picture(const TestProgram& program, const std::string& test_name) {
-    const fs::path folder = program.output / folder_name(test_name);
-    fs::remove_all(folder);
-    fs::create_directories(folder);
+    const fs::path folder = fresh_folder(program.output / folder_name(test_name));
     ProcessSpec spec = checker_spec(program, {"--gtest_filter=" + test_name}, folder);
     spec.environment.emplace_back("WHITTED_REFERENCE_ONLY", "1");
     run_process(spec);

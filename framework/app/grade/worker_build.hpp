@@ -34,13 +34,13 @@ struct WorkerBuild {
 /// Compiles labs/<lab>.cpp to <lab>.o for each lab, `jobs` at a time; returns each lab's step.
 std::map<std::string, BuildStep> compile_labs(const WorkerBuild& build, const std::vector<std::string>& labs);
 
-/// A worker program: its file name and the labs whose student objects it links.
+/// A worker program: what it is for and the labs whose student objects it links.
 struct WorkerParts {
-    std::string name;                  // "worker_03_blinn_phong"
+    std::string name;                  // a lab ("03_blinn_phong") or "integration"; the program is worker_<name>
     std::vector<std::string> own_labs; // the rest of `all_labs` comes from the kit's remote objects
 };
 
-/// Links each worker, `jobs` at a time; returns each one's step by name.
+/// Links each worker to worker_<name> in the build folder, `jobs` at a time; returns each one's step by name.
 std::map<std::string, BuildStep> link_workers(const WorkerBuild& build, const std::vector<WorkerParts>& workers,
                                               const std::vector<std::string>& all_labs);
 
