@@ -1,4 +1,4 @@
-# The six labs, and how the build mixes implementations of them.
+# The labs, and how the build mixes implementations of them.
 #
 # Every lab is one file with the same name in solution/ (the reference), in
 # labs/ (the student's) and in tests/mistakes/<lab>/ (catalogued mistakes).
@@ -6,7 +6,52 @@
 # implementation and every other lab from another: that is how one lab is
 # graded in isolation.
 
-set(WHITTED_LABS 01_ray_casting 02_shadows 03_blinn_phong 04_reflection 05_refraction 06_fresnel)
+# WHITTED_LABS: the lab stems, in order, read from the rows of the lab table
+# (framework/include/whitted/lab_table.hpp), the one list of labs.
+set(WHITTED_LAB_TABLE ${PROJECT_SOURCE_DIR}/framework/include/whitted/lab_table.hpp)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${WHITTED_LAB_TABLE})
+file(STRINGS ${WHITTED_LAB_TABLE} lab_rows REGEX "^ *LabInfo{")
+set(WHITTED_LABS)
+foreach(row IN LISTS lab_rows)
+  list(LENGTH WHITTED_LABS index)
+  math(EXPR number "${index} + 1")
+  if(NOT row MATCHES "^ *LabInfo{([0-9]+), \"([0-9][0-9]_[a-z0-9_]+)\", \"[^\"]+\", Stage::[a-z0-9_]+, \"[a-z0-9_ ]+\"},$"
+     OR NOT CMAKE_MATCH_1 EQUAL number)
+    message(FATAL_ERROR "${WHITTED_LAB_TABLE}: row ${number} of kLabs is not of the form\n"
+                        "  LabInfo{${number}, \"NN_stem\", \"title\", Stage::name, \"function function\"},\n"
+                        "on one line: ${row}")
+  endif()
+  list(APPEND WHITTED_LABS ${CMAKE_MATCH_2})
+endforeach()
+if(NOT WHITTED_LABS)
+  message(FATAL_ERROR "${WHITTED_LAB_TABLE}: no rows of kLabs found")
+endif()
+
+# The rubric grades exactly these labs and the integration tier, in this order.
+function(whitted_check_rubric rubric)
+  if(NOT EXISTS ${rubric})
+    return()
+  endif()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${rubric})
+  file(READ ${rubric} text)
+  string(JSON count ERROR_VARIABLE error LENGTH "${text}" labs)
+  if(error)
+    message(FATAL_ERROR "${rubric}: ${error}")
+  endif()
+  set(listed)
+  math(EXPR last "${count} - 1")
+  foreach(index RANGE ${last})
+    string(JSON lab ERROR_VARIABLE error GET "${text}" labs ${index} lab)
+    list(APPEND listed "${lab}")
+  endforeach()
+  set(expected ${WHITTED_LABS} integration)
+  if(NOT listed STREQUAL expected)
+    string(REPLACE ";" ", " listed "${listed}")
+    string(REPLACE ";" ", " expected "${expected}")
+    message(FATAL_ERROR "${rubric}: its labs are ${listed}; the lab table (${WHITTED_LAB_TABLE}) "
+                        "asks for ${expected}, in that order")
+  endif()
+endfunction()
 
 # whitted_lab_objects(SET DIR): object libraries SET_<lab> from DIR/<lab>.cpp.
 function(whitted_lab_objects set dir)

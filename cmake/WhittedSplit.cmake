@@ -6,7 +6,7 @@
 # A worker: one implementation of the graded lab (or of all six), remote_<lab>
 #   for the others, and the worker's main. It holds no reference code.
 
-# The bits 1..6 of a set of lab names.
+# The bits 1..N of a set of lab names (lab k is bit k).
 function(whitted_lab_bits out)
   set(bits 0)
   foreach(lab IN LISTS ARGN)

@@ -36,11 +36,11 @@ declare -A binary=([reference]=reference/whitted [O0]=O0/whitted [clang]=clang/w
                    [float]=float/whitted-student)
 render_all() { # variant
     local out="$work/images-$1"; mkdir -p "$out"
-    for scene in scenes/0*.p3f tests/hidden/scenes/*.p3f; do
+    for scene in scenes/[0-9][0-9]_*.p3f tests/hidden/scenes/*.p3f; do
         local name; name=$(basename "$scene" .p3f)
         local size="--width 160 --height 120"
         [[ $name == *hidden ]] && size="--width 200 --height 150"
-        "$work/${binary[$1]}" render "$scene" --stage "${name:1:1}" $size -o "$out/$name.pfm" -q
+        "$work/${binary[$1]}" render "$scene" --stage "$((10#${name:0:2}))" $size -o "$out/$name.pfm" -q
     done
     "$work/${binary[$1]}" render scenes/whitted_1980.p3f --width 128 --height 128 -o "$out/whitted_1980.pfm" -q
 }

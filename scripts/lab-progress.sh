@@ -15,21 +15,22 @@ echo
 echo "Lab progress"
 echo "------------"
 unfinished=""
-titles=("ray casting" "shadows" "Blinn-Phong" "reflection" "refraction" "Fresnel")
-for n in 1 2 3 4 5 6; do
+# The labs of the lab table (framework/include/whitted/lab_table.hpp): number, stem, title.
+lab_rows=$(./whitted labs --tsv) || { echo "lab-progress: $build/whitted labs failed" >&2; exit 1; }
+while IFS=$'\t' read -r n stem title _; do
     lines=$(grep -E "Test +#[0-9]+: lab$n\." Testing/progress.log)
     total=$(printf '%s\n' "$lines" | grep -c . || true)
     passed=$(printf '%s\n' "$lines" | grep -c ' Passed ' || true)
     if [ "$total" -eq 0 ]; then continue; fi
     mark="  "
     [ "$passed" -eq "$total" ] && mark="ok"
-    printf '%s lab %d (%s): %d/%d tests pass\n' "$mark" "$n" "${titles[$((n - 1))]}" "$passed" "$total"
+    printf '%s lab %d (%s): %d/%d tests pass\n' "$mark" "$n" "$title" "$passed" "$total"
     if [ "$passed" -ne "$total" ]; then
-        lab_file=$(ls "$source_dir"/labs/0${n}_*.cpp 2>/dev/null | head -1)
+        lab_file="$source_dir/labs/$stem.cpp"
         left=0
-        [ -n "$lab_file" ] && left=$(grep -cE "^[[:space:]]*not_implemented\(\);" "$lab_file" || true)
-        [ "${left:-0}" -gt 0 ] && echo "     $left function(s) in labs/$(basename "$lab_file") still call not_implemented()"
-        stubs=$(grep -oE "labs/0${n}_[a-z_]+\.cpp:[0-9]+: [a-z_]+\(\) is not implemented yet" "$log" 2>/dev/null | sort -u)
+        [ -f "$lab_file" ] && left=$(grep -cE "^[[:space:]]*not_implemented\(\);" "$lab_file" || true)
+        [ "${left:-0}" -gt 0 ] && echo "     $left function(s) in labs/$stem.cpp still call not_implemented()"
+        stubs=$(grep -oE "labs/$stem\.cpp:[0-9]+: [a-z_]+\(\) is not implemented yet" "$log" 2>/dev/null | sort -u)
         if [ -n "$stubs" ]; then
             printf '%s\n' "$stubs" | sed 's/^/     /'
         elif [ -n "$unfinished" ]; then
@@ -39,7 +40,7 @@ for n in 1 2 3 4 5 6; do
         fi
         [ -n "$unfinished" ] || unfinished=$n
     fi
-done
+done <<< "$lab_rows"
 # The failed tests whose output says a lab function is not implemented yet: they wait for a lab, they are not broken.
 waiting=$(awk '/^[0-9]+\/[0-9]+ Test: / { name = $3 } /is not implemented yet/ && name != "" { print name; name = "" }' "$log" 2>/dev/null | sort -u)
 for group in framework integration cli; do

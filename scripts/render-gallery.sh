@@ -59,7 +59,6 @@ gallery=(
     "06_fresnel     always_entering           06_fresnel     6"
     "06_fresnel     schlick                   06_fresnel     6 diff"
 )
-labs=(01_ray_casting 02_shadows 03_blinn_phong 04_reflection 05_refraction 06_fresnel)
 
 # Build the reference renderer and only the mistake renderers the gallery uses.
 if [ ! -f "$build/CMakeCache.txt" ]; then
@@ -77,10 +76,10 @@ render() { # renderer scene stage output
     "$1" render "scenes/$2.p3f" --stage "$3" "${size[@]}" --quiet -o "$4"
 }
 
-# Goal pictures.
-for lab in "${labs[@]}"; do
-    render "$build/whitted" "$lab" "${lab:1:1}" "$out/${lab}_goal.png"
-done
+# Goal pictures: each lab's scene at its stage (the lab table).
+while IFS=$'\t' read -r number lab _; do
+    render "$build/whitted" "$lab" "$number" "$out/${lab}_goal.png"
+done < <("$build/whitted" labs --tsv)
 
 # Gallery pictures.
 for entry in "${gallery[@]}"; do
@@ -91,7 +90,7 @@ for entry in "${gallery[@]}"; do
     # picture is an error.
     rm -f "$picture"
     render "$build/mistakes/whitted-mistake-$lab-$name" "$scene" "$stage" "$picture" 2> /dev/null || test -f "$picture"
-    if [ "$stage" = "${scene:1:1}" ]; then
+    if [ "$stage" = "$((10#${scene:0:2}))" ]; then
         correct="$out/${scene}_goal.png"
     else
         correct="$out/${scene}_stage${stage}.png"

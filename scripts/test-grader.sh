@@ -18,8 +18,6 @@ cd "$(dirname "$0")/.."
 # shellcheck source=lib/grading-checks.sh
 source scripts/lib/grading-checks.sh test-grader
 
-labs="01_ray_casting 02_shadows 03_blinn_phong 04_reflection 05_refraction 06_fresnel"
-
 # (a) The reference solution, as a student tree, then as its labs/ folder.
 mkdir -p "$work/reference-tree"
 cp -r solution "$work/reference-tree/labs"

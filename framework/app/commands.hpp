@@ -25,6 +25,9 @@ Command add_diff_command(CLI::App& app);
 /// `whitted generate KIND [--level N] [-o FILE]`
 Command add_generate_command(CLI::App& app);
 
+/// `whitted labs [--tsv]`
+Command add_labs_command(CLI::App& app);
+
 /// `whitted grade SUBMISSION ...` (instructors)
 Command add_grade_command(CLI::App& app);
 

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     const std::vector<whitted::Command> commands = {whitted::add_render_command(app), whitted::add_trace_command(app),
                                                     whitted::add_diff_command(app),
-                                                    whitted::add_generate_command(app), whitted::add_grade_command(app)};
+                                                    whitted::add_generate_command(app), whitted::add_labs_command(app), whitted::add_grade_command(app)};
 
     try {
         app.parse(argc, argv);

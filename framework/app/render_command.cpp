@@ -183,9 +183,9 @@ Command add_render_command(CLI::App& app) {
     render_command->add_option("--threads", options->threads, "Rendering threads; 0 = one per core (default 0)")
         ->check(CLI::Range(0, 1024));
     render_command->add_option("--stage", options->stage,
-                               "Use the features of labs 1..K only: 1 ray casting, 2 shadows, 3 Blinn-Phong, "
-                               "4 reflection, 5 refraction, 6 Fresnel (default: the highest stage whose labs are done)")
-        ->check(CLI::Range(1, 6));
+                               "Use the features of labs 1..K only: " + stage_list() +
+                                   " (default: the highest stage whose labs are done)")
+        ->check(CLI::Range(1, kLabCount));
     render_command->add_flag("--stats", options->stats, "Print how many rays of each kind were cast, and rays per second");
     render_command->add_option("--stats-json", options->stats_json,
                                "Also write the timings (parse, build, render), ray counts and sizes as JSON to FILE")

@@ -1,6 +1,7 @@
 #include "lab_link.hpp"
 
 #include "printable.hpp"
+#include "whitted/lab_status.hpp"
 #include "whitted/not_implemented.hpp"
 
 #include <algorithm>
@@ -37,21 +38,34 @@ std::vector<std::byte> exception_payload(ExceptionKind kind, const std::string& 
 
 } // namespace
 
-int lab_of(Op op) {
-    constexpr std::array<int, kLastOp + 1> labs{0, 1, 1, 1, 1, 1, 1, 1, 2, 2, 2, 3, 4, 4, 5, 5, 6, 6};
-    const int index = static_cast<int>(op);
-    return index >= 1 && index <= kLastOp ? labs[index] : 0;
-}
-
-std::string name_of(Op op) {
-    static const std::array<const char*, kLastOp + 1> names{
+std::string_view function_of(Op op) {
+    static constexpr std::array<std::string_view, kLastOp + 1> names{
         "?", "primary_ray", "intersect_sphere", "intersect_plane", "intersect_triangle", "closest_hit",
         "Scene::closest_hit", "Scene::occluded", "spawn_ray", "is_lit", "lambert", "blinn_phong",
         "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
         "fresnel_blend"};
     const int index = static_cast<int>(op);
-    return std::string(index >= 1 && index <= kLastOp ? names[index] : "?") + "()";
+    return index >= 1 && index <= kLastOp ? names[static_cast<std::size_t>(index)] : "?";
 }
+
+int lab_of(Op op) {
+    // Each function's lab from the lab table, looked up once; the scene's two queries are
+    // made of lab 1's code (closest_hit and the intersections).
+    static const std::array<int, kLastOp + 1> labs = [] {
+        std::array<int, kLastOp + 1> found{};
+        for (int index = 1; index <= kLastOp; ++index)
+            for (const LabInfo& lab : kLabs)
+                for (const std::string_view function : lab_functions(lab))
+                    if (function == function_of(static_cast<Op>(index))) found[static_cast<std::size_t>(index)] = lab.number;
+        found[static_cast<std::size_t>(Op::scene_closest_hit)] = found[static_cast<std::size_t>(Op::scene_occluded)] =
+            stage_number(Stage::ray_casting);
+        return found;
+    }();
+    const int index = static_cast<int>(op);
+    return index >= 1 && index <= kLastOp ? labs[static_cast<std::size_t>(index)] : 0;
+}
+
+std::string name_of(Op op) { return std::string(function_of(op)) + "()"; }
 
 Link::Link(Role role, const ChannelFds& fds, LabSet remote_labs)
     : role_(role), channel_(fds, role == Role::checker),
@@ -243,7 +257,7 @@ bool Link::allowed(Op op, const Tracer* tracer) const {
     const int lab = lab_of(op);
     if (lab == 0 || (remote_labs_ & lab_bit(lab))) return false; // its code is over there
     int graded = 1;
-    while (graded <= 6 && !(remote_labs_ & lab_bit(graded))) ++graded;
+    while (graded <= kLabCount && !(remote_labs_ & lab_bit(graded))) ++graded;
     if (lab < graded) return true;                                  // an earlier lab: the student's code may use it
     return tracer != nullptr && lab <= tracer->settings().stage;   // a later lab, as the render's stage asks
 }

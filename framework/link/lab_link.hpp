@@ -21,6 +21,7 @@
 // test (exit code 3), however the test handles exceptions.
 #pragma once
 
+#include "whitted/lab_table.hpp"
 #include "wire.hpp"
 
 #include <cstdint>
@@ -45,7 +46,7 @@ enum class Op : std::uint16_t {
 };
 constexpr int kLastOp = static_cast<int>(Op::fresnel_blend);
 
-/// The lab (1..6) whose code answers `op`.
+/// The lab (1..kLabCount, from the lab table) whose code answers `op`; 0 for none.
 int lab_of(Op op);
 /// "blinn_phong()" for Op::blinn_phong, for messages.
 std::string name_of(Op op);
@@ -55,8 +56,9 @@ enum class Role {
     worker,  // runs the student's code on what the checker sends
 };
 
-/// A set of labs as bits 1..6.
+/// A set of labs as bits 1..kLabCount.
 using LabSet = std::uint32_t;
+static_assert(kLabCount < 32, "LabSet holds the labs as bits of 32");
 constexpr LabSet lab_bit(int lab) { return LabSet{1} << lab; }
 
 /// The lab code of the other side threw: rethrown here as what it was.

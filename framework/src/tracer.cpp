@@ -67,18 +67,18 @@ Color Tracer::shade(const Ray& ray, int depth) const {
     if (!hit) return scene_.background();
     const Material& material = scene_.material(*hit);
     const Vec3 wo = -ray.direction;
-    const int stage = settings_.stage;
+    const auto reached = [stage = settings_.stage](Stage feature) { return stage >= stage_number(feature); };
 
-    // Local colour: flat (lab 1), Lambert with shadows (lab 2), Blinn-Phong (lab 3 on).
-    if (stage == 1) return noted(&RayNode::local, material.color_at(hit->point));
-    Color color = noted(&RayNode::local, stage == 2 ? lambert(*this, *hit) : blinn_phong(*this, *hit, wo));
-    if (stage < 4 || depth >= settings_.max_depth) return color;
+    // Local colour: flat (ray casting), Lambert with shadows, then Blinn-Phong.
+    if (!reached(Stage::shadows)) return noted(&RayNode::local, material.color_at(hit->point));
+    Color color = noted(&RayNode::local, reached(Stage::blinn_phong) ? blinn_phong(*this, *hit, wo) : lambert(*this, *hit));
+    if (!reached(Stage::reflection) || depth >= settings_.max_depth) return color;
 
     // Secondary rays, one level deeper.
     const bool transparent = material.transmittance > 0.0;
-    if (stage >= 6 && transparent) return color + noted(&RayNode::fresnel, fresnel_blend(*this, *hit, wo, depth));
+    if (reached(Stage::fresnel) && transparent) return color + noted(&RayNode::fresnel, fresnel_blend(*this, *hit, wo, depth));
     if (material.specular > 0.0) color += noted(&RayNode::reflection, reflection(*this, *hit, wo, depth));
-    if (stage >= 5 && transparent) color += noted(&RayNode::refraction, refraction(*this, *hit, wo, depth));
+    if (reached(Stage::refraction) && transparent) color += noted(&RayNode::refraction, refraction(*this, *hit, wo, depth));
     return color;
 }
 

@@ -1,6 +1,7 @@
 // The rubric: what it accepts, how it says what is wrong, and how it shares out points.
 #include "grade/rubric.hpp"
 #include "grade/scoring.hpp"
+#include "grade/submission.hpp"
 
 #include <gtest/gtest.h>
 
@@ -72,10 +73,13 @@ TEST(Rubric, ErrorsForWrongContent) {
               std::string::npos);
 }
 
+// The rubric grades the labs of the lab table, in its order, then the integration tier.
 TEST(Rubric, TheProjectRubricIsValidAndWorthOneHundredPoints) {
-    const Rubric rubric = load_rubric(std::string(WHITTED_SOURCE_DIR) + "/tests/rubric.json",
-                                      {"01_ray_casting", "02_shadows", "03_blinn_phong", "04_reflection", "05_refraction",
-                                       "06_fresnel", "integration"});
+    std::vector<std::string> labs = lab_names();
+    labs.push_back("integration");
+    const Rubric rubric = load_rubric(std::string(WHITTED_SOURCE_DIR) + "/tests/rubric.json", labs);
+    ASSERT_EQ(rubric.labs.size(), labs.size());
+    for (std::size_t i = 0; i < labs.size(); ++i) EXPECT_EQ(rubric.labs[i].lab, labs[i]);
     long cents = 0;
     for (const LabRubric& lab : rubric.labs)
         for (const Rule& rule : lab.rules) cents += rule.points_cents;

@@ -5,7 +5,7 @@
 //   check_<lab> --worker=PROGRAM [gtest options]     start the worker here (CTest, by hand)
 //
 // WHITTED_REMOTE_LABS (a compile definition) is the set of labs the worker
-// answers, as bits 1..6. With WHITTED_LINK_REPORT=<file> in the environment, a
+// answers, as bits 1..N (lab k is bit k). With WHITTED_LINK_REPORT=<file> in the environment, a
 // broken link's reason is also written to that file (for the grader). Exit
 // code: GoogleTest's (0 all passed, 1 a failure), or 3 when the link broke (the worker died, stalled, or broke the protocol) or
 // the worker ended badly: then no test of this run may count as passed.

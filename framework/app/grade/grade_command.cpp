@@ -91,7 +91,7 @@ int run_grade(const GradeOptions& options) {
     setup.instructor_tree = fs::weakly_canonical(fs::absolute(options.instructor_tree));
     if (!fs::is_regular_file(setup.instructor_tree / "CMakeLists.txt") || !fs::is_directory(setup.instructor_tree / "solution"))
         throw UsageError(setup.instructor_tree.string() + " is not an instructor tree (no CMakeLists.txt or solution/)");
-    const std::vector<std::string> labs = lab_names(setup.instructor_tree);
+    const std::vector<std::string> labs = lab_names();
     const fs::path submission = fs::weakly_canonical(fs::absolute(options.submission));
     setup.submission_labs = find_lab_folder(submission, labs);
     setup.out = fs::weakly_canonical(fs::absolute(options.out));

@@ -1,5 +1,7 @@
 #include "grade/submission.hpp"
 
+#include "whitted/lab_table.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -77,15 +79,9 @@ std::map<std::string, std::string> copy_lab_files(const fs::path& from, const fs
     return refused;
 }
 
-std::vector<std::string> lab_names(const fs::path& instructor_tree) {
+std::vector<std::string> lab_names() {
     std::vector<std::string> names;
-    for (const fs::directory_entry& entry : fs::directory_iterator(instructor_tree / "labs")) {
-        const std::string stem = entry.path().stem().string();
-        if (entry.path().extension() == ".cpp" && stem.size() > 3 && std::isdigit(static_cast<unsigned char>(stem[0])) &&
-            std::isdigit(static_cast<unsigned char>(stem[1])) && stem[2] == '_')
-            names.push_back(stem);
-    }
-    std::sort(names.begin(), names.end());
+    for (const LabInfo& lab : kLabs) names.emplace_back(lab.stem);
     return names;
 }
 

@@ -32,7 +32,7 @@ std::map<std::string, std::string> copy_lab_files(const std::filesystem::path& f
 /// read without blocking; throws std::runtime_error saying what it is instead.
 std::string read_regular_file(const std::filesystem::path& file, std::size_t max_bytes);
 
-/// The lab names of a tree: the NN_name.cpp files in its labs/ folder, sorted.
-std::vector<std::string> lab_names(const std::filesystem::path& instructor_tree);
+/// The labs' stems ("01_ray_casting", ...), in order, from the lab table.
+std::vector<std::string> lab_names();
 
 } // namespace whitted::grade

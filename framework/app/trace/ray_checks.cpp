@@ -81,7 +81,7 @@ std::optional<DirectionCheck> check_direction(const RayTree& tree, int index, co
 std::optional<MissingRefraction> check_missing_refraction(const RayTree& tree, int index, const TraceContext& context) {
     const RayNode& node = tree.nodes[index];
     const RenderSettings& settings = context.settings;
-    if (!node.hit || settings.stage < 5 || node.depth >= settings.max_depth) return std::nullopt;
+    if (!node.hit || settings.stage < stage_number(Stage::refraction) || node.depth >= settings.max_depth) return std::nullopt;
     const Material& material = context.scene.material(*node.hit);
     if (material.transmittance <= 0.0) return std::nullopt;
     for (int child : node.children)

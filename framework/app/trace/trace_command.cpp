@@ -4,6 +4,7 @@
 #include "stage_choice.hpp"
 #include "trace/ray_tree_report.hpp"
 #include "whitted/image_pictures.hpp"
+#include "whitted/lab_table.hpp"
 #include "whitted/leaf_kernels.hpp"
 #include "whitted/passes.hpp"
 #include "whitted/render.hpp"
@@ -124,8 +125,9 @@ Command add_trace_command(CLI::App& app) {
     command->add_option("--max-depth", options->max_depth, "Deepest ray in the ray tree (default: the scene's, else 5)")
         ->check(CLI::Range(1, 100));
     command->add_option("--min-weight", options->min_weight, "As for render (default 1/1024)")->check(min_weight_validator());
-    command->add_option("--stage", options->stage, "Use the features of labs 1..K only (default: the highest stage whose labs are done)")
-        ->check(CLI::Range(1, 6));
+    command->add_option("--stage", options->stage,
+                        "Use the features of labs 1..K only: " + stage_list() + " (default: the highest stage whose labs are done)")
+        ->check(CLI::Range(1, kLabCount));
     command->add_option("--json", options->json, "Also write the tree as JSON to FILE; - writes only the JSON, to the standard output")
         ->type_name("FILE")
         ->check(writable_file_validator());

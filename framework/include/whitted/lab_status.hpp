@@ -6,21 +6,35 @@
 // unfinished function deep inside a render.
 #pragma once
 
+#include "whitted/lab_table.hpp"
+
+#include <functional>
+#include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace whitted {
 
+class Scene;
+class Tracer;
+
 struct LabStatus {
-    int number = 0;      // 1..6
+    int number = 0;      // 1..kLabCount
     std::string name;    // "05_refraction": the file stem used everywhere
     std::string title;   // "refraction"
     bool done = true;
     std::string message; // the first "is not implemented yet" message, when not done
 };
 
-/// The status of the six labs, in order.
+/// The status of every lab of the table, in order.
 std::vector<LabStatus> probe_labs();
+
+/// The functions a lab asks for, from its row of the table.
+std::vector<std::string_view> lab_functions(const LabInfo& lab);
+
+/// One call of each lab function on a tiny scene, by function name; `scene` and `tracer` must outlive them.
+std::map<std::string_view, std::function<void()>> lab_probes(const Scene& scene, const Tracer& tracer);
 
 /// The largest k such that labs 1..k are all done (0 when lab 1 is not).
 int highest_complete_stage(const std::vector<LabStatus>& labs);

@@ -8,6 +8,7 @@
 // rays for `--stats` and, when given a RayTree, records every ray it casts.
 #pragma once
 
+#include "whitted/lab_table.hpp"
 #include "whitted/ray_tree.hpp"
 #include "whitted/scene.hpp"
 
@@ -31,7 +32,7 @@ struct RayStats {
 
 /// Which labs' features a render uses: stage k renders with labs 1..k.
 struct RenderSettings {
-    int stage = 6;      // 1 ray casting, 2 shadows, 3 Blinn-Phong, 4 reflection, 5 refraction, 6 Fresnel
+    int stage = kLabCount; // 1..kLabCount: whitted/lab_table.hpp names the stages
     int max_depth = 5;  // deepest ray in the ray tree; the eye ray is depth 1
     // Whitted's adaptive depth control: a secondary ray whose accumulated weight
     // (the product of the coefficients on its path from the eye) is below this in
