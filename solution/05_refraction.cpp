@@ -12,7 +12,7 @@ std::optional<Vec3> refracted_direction(const Vec3& wo, const Vec3& n, double et
     // Snell: sin(theta_t) = eta_i / eta_t sin(theta_i).
     const double eta = eta_i / eta_t;
     const double sin2_theta_t = eta * eta * glm::max(0.0, 1.0 - cos_theta_i * cos_theta_i);
-    if (sin2_theta_t > 1.0) return std::nullopt; // total internal reflection
+    if (sin2_theta_t >= 1.0) return std::nullopt; // total internal reflection, from the critical angle on
     const double cos_theta_t = std::sqrt(1.0 - sin2_theta_t);
     // rt = sin(theta_t) t + cos(theta_t) (-n), and sin(theta_t) t = eta vt.
     return glm::normalize(eta * vt - cos_theta_t * n);

@@ -7,9 +7,10 @@ namespace whitted {
 
 double fresnel_reflectance(double cos_theta_i, double eta_i, double eta_t) {
     cos_theta_i = glm::clamp(cos_theta_i, 0.0, 1.0); // rounding may push a unit dot product past 1
-    const double sin_theta_t = eta_i / eta_t * std::sqrt(glm::max(0.0, 1.0 - cos_theta_i * cos_theta_i));
-    if (sin_theta_t >= 1.0) return 1.0; // total internal reflection
-    const double cos_theta_t = std::sqrt(1.0 - sin_theta_t * sin_theta_t);
+    const double eta = eta_i / eta_t;
+    const double sin2_theta_t = eta * eta * glm::max(0.0, 1.0 - cos_theta_i * cos_theta_i);
+    if (sin2_theta_t >= 1.0) return 1.0; // total internal reflection, from the critical angle on (as in lab 5)
+    const double cos_theta_t = std::sqrt(1.0 - sin2_theta_t);
     // Rs and Rp: reflectance of light polarised perpendicular and parallel to the plane of incidence.
     const double rs = (eta_i * cos_theta_i - eta_t * cos_theta_t) / (eta_i * cos_theta_i + eta_t * cos_theta_t);
     const double rp = (eta_i * cos_theta_t - eta_t * cos_theta_i) / (eta_i * cos_theta_t + eta_t * cos_theta_i);

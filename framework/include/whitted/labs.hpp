@@ -8,7 +8,9 @@
 //     (towards a light, or along a new reflected / refracted ray);
 //   - hit.normal is a unit vector on the same side as wo (see hit.hpp);
 //   - eta_i is the index of refraction on the side of wo (where the ray we
-//     trace comes from), eta_t the one on the other side (air is 1).
+//     trace comes from), eta_t the one on the other side (air is 1);
+//   - total internal reflection is sin^2(theta_t) = (eta_i / eta_t)^2 (1 - cos^2(theta_i)) >= 1:
+//     at the critical angle itself and beyond (labs 5 and 6 alike).
 #pragma once
 
 #include "whitted/camera.hpp"

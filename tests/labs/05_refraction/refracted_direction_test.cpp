@@ -91,6 +91,18 @@ TEST(RefractedDirection, TotalInternalReflectionGivesNoDirectionJustPastTheCriti
     EXPECT_FALSE(refracted_direction(direction_at(70.0), kUp, 1.5, 1.0).has_value());
 }
 
+TEST(RefractedDirection, AtExactlyTheCriticalAngleThereIsNoRefractedRay) {
+    // From eta 1.25 into air with cos(theta_i) = 0.6, sin(theta_i) = 0.8:
+    // sin^2(theta_t) = 1.25^2 (1 - 0.6^2) = 1.5625 x 0.64 = 1, exactly in doubles
+    // (and 1.25 x sqrt(0.64) = 1 too). The refracted ray would run along the
+    // surface: the contract (labs.hpp) counts sin^2(theta_t) >= 1 as total
+    // internal reflection, as lab 6's fresnel_reflectance() does.
+    const Vec3 wo(0.8, 0.0, 0.6); // kUp is +z
+    ASSERT_EQ(glm::dot(wo, kUp), 0.6);
+    EXPECT_FALSE(refracted_direction(wo, kUp, 1.25, 1.0).has_value())
+        << "at exactly the critical angle (sin^2 theta_t = 1) there is no refracted direction";
+}
+
 TEST(RefractedDirection, JustBeforeTheCriticalAngleTheRayLeavesAlmostAlongTheSurface) {
     // At 41.80 degrees: sin(theta_t) = 1.5 sin(41.80) = 0.999799, theta_t = 88.8504 degrees.
     const auto wt = refracted_direction(direction_at(41.80), kUp, 1.5, 1.0);

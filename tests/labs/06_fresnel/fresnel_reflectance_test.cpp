@@ -50,6 +50,13 @@ TEST(FresnelReflectance, TotalInternalReflectionReflectsEverything) {
     EXPECT_EQ(kr_at(89.0, 1.5, 1.0), 1.0);
 }
 
+TEST(FresnelReflectance, IsOneAtExactlyTheCriticalAngle) {
+    // From eta 1.25 into air at cos(theta_i) = 0.6: sin^2(theta_t) = 1.5625 x 0.64 = 1
+    // exactly, lab 5's condition for total internal reflection; the equations
+    // agree there (cos_t = 0 gives Rs = 1, Rp = 1), and nothing may be NaN.
+    EXPECT_EQ(fresnel_reflectance(0.6, 1.25, 1.0), 1.0);
+}
+
 TEST(FresnelReflectance, IsTheSameOnBothSidesAlongTheSamePath) {
     // Light entering at 45 degrees and light leaving along the refracted path
     // (theta_t = 28.1255 degrees) reflect the same fraction.
