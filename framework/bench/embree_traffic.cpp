@@ -49,16 +49,17 @@ std::optional<Vec3> refracted_direction(const Vec3& wo, const Vec3& n, double et
     const Vec3 vt = cos_theta_i * n - wo;
     const double eta = eta_i / eta_t;
     const double sin2_theta_t = eta * eta * glm::max(0.0, 1.0 - cos_theta_i * cos_theta_i);
-    if (sin2_theta_t > 1.0) return std::nullopt;
+    if (sin2_theta_t >= 1.0) return std::nullopt;
     return glm::normalize(eta * vt - std::sqrt(1.0 - sin2_theta_t) * n);
 }
 
 // The unpolarised Fresnel reflectance (as the reference's fresnel_reflectance); 1 on total internal reflection.
 double fresnel_reflectance(double cos_theta_i, double eta_i, double eta_t) {
     cos_theta_i = glm::clamp(cos_theta_i, 0.0, 1.0);
-    const double sin_theta_t = eta_i / eta_t * std::sqrt(glm::max(0.0, 1.0 - cos_theta_i * cos_theta_i));
-    if (sin_theta_t >= 1.0) return 1.0;
-    const double cos_theta_t = std::sqrt(1.0 - sin_theta_t * sin_theta_t);
+    const double eta = eta_i / eta_t;
+    const double sin2_theta_t = eta * eta * glm::max(0.0, 1.0 - cos_theta_i * cos_theta_i);
+    if (sin2_theta_t >= 1.0) return 1.0;
+    const double cos_theta_t = std::sqrt(1.0 - sin2_theta_t);
     const double rs = (eta_i * cos_theta_i - eta_t * cos_theta_t) / (eta_i * cos_theta_i + eta_t * cos_theta_t);
     const double rp = (eta_i * cos_theta_t - eta_t * cos_theta_i) / (eta_i * cos_theta_t + eta_t * cos_theta_i);
     return 0.5 * (rs * rs + rp * rp);
