@@ -8,11 +8,12 @@
 # succeeds, and the benchmark skips the comparisons. With --sandbox it also
 # installs bubblewrap, the grader's optional sandbox; --fuzz, clang for the
 # fuzzing build; --browser, chromium, which `make test-report` opens the
-# grading report in; --ci, python3 (the grader checks read results.json with
-# it), bubblewrap and chromium, for CI on a bare machine.
+# grading report in; --proofs, GNU patch (the catalogued mistakes are patches
+# of the reference); --ci, python3 (the grader checks read results.json with
+# it), patch, bubblewrap and chromium, for CI on a bare machine.
 set -euo pipefail
 
-packages=(g++ make cmake pkg-config libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev)
+packages=(g++ make cmake pkg-config libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev libseccomp-dev)
 optional=()
 case "${1:-}" in
     "") ;;
@@ -20,12 +21,13 @@ case "${1:-}" in
     --sandbox) optional=(bubblewrap) ;;
     --fuzz) optional=(clang libclang-rt-14-dev) ;;
     --browser) optional=(chromium) ;;
-    --ci) packages+=(python3) optional=(bubblewrap chromium) ;;
-    *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz|--browser|--ci]" >&2; exit 2 ;;
+    --proofs) packages+=(patch) ;;
+    --ci) packages+=(python3 patch) optional=(bubblewrap chromium) ;;
+    *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz|--browser|--proofs|--ci]" >&2; exit 2 ;;
 esac
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
-    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json)${optional[*]:+; optional: ${optional[*]}}" >&2
+    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json, libseccomp)${optional[*]:+; optional: ${optional[*]}}" >&2
     exit 0
 fi
 

@@ -58,6 +58,13 @@ ok(os.path.getsize(folder + "/results.json") < 2_000_000, "results.json is large
 ok(os.path.getsize(folder + "/report.html") < 20_000_000, "report.html is larger than 20 MB")
 def shown(lab, text): return any(text in t["output"] for t in by_lab[lab])
 def lost(lab): ok(lab_score(lab) < lab_max(lab), lab + ": full marks for a hostile lab")
+# How a hidden test ended is chosen by the student code, maybe from its inputs: only passed or failed is shown.
+import re
+for label, name in re.findall(r'<span class="badge [^"]*">([^<]*)</span><b>(Hidden[^<]*)</b>', html):
+    ok(label in ("passed", "failed", "compile error", "missing", "skipped"), "a hidden test shows a status its code chose: " + name + ": " + label)
+for t in results["tests"]:
+    if t["visibility"] == "hidden":
+        ok(t["extra_data"]["status"] in ("passed", "failed", "compile_error", "missing", "skipped"), "results.json: a hidden test shows " + t["extra_data"]["status"])
 '
 
 grade reference-first "$tree/solution" 0
@@ -142,6 +149,19 @@ for lab in ("04_reflection", "05_refraction", "06_fresnel"):
     ok(lab_score(lab) == lab_max(lab), lab + ": correct code lost points: " + str(statuses(lab)))
 ok(open(folder + "/results.json").read(1) == "{", "results.json was overwritten")'
 
+    # Something left for a later run or a later grading, a socket, and the grader's session (its terminal).
+    leave='#include <cstdio> #include <cstring> #include <fcntl.h> #include <mqueue.h> #include <sys/shm.h> #include <sys/socket.h> #include <unistd.h> static const bool kept = [] { std::printf(getsid(0) == getpid() ? "a session of its own\n" : "SHARES a session\n"); const int made = open("/run/lock/hostile-lock", O_CREAT | O_WRONLY, 0666); mq_attr attr{}; attr.mq_maxmsg = 1; attr.mq_msgsize = 8; const mqd_t queue = mq_open("/hostile-queue", O_CREAT | O_RDWR, 0666, &attr); const int tcp = socket(AF_INET, SOCK_STREAM, 0); const int tmp = open("/tmp/hostile-kept", O_CREAT | O_WRONLY, 0666); std::printf("left: lock %d, queue %d, socket %d, tmp %d\n", made, (int)queue, tcp, tmp); const int id = shmget(0x686f7374, 4096, IPC_CREAT | 0600); char* text = id >= 0 ? static_cast<char*>(shmat(id, nullptr, 0)) : nullptr; if (text && text != reinterpret_cast<char*>(-1)) { if (*text) std::printf("LEAKED across runs: %s\n", text); else std::strcpy(text, "written by an earlier run"); } std::printf("shared memory %d\n", id); return true; }(); (void)kept;'
+    # Vectors and colours right in x and NaN in y and z: a comparison that drops NaN would pass them.
+    hostile "hostile-c-$mode" \
+        04_reflection mirror_direction '#include <cmath> { const Vec3 r = 2.0 * glm::dot(wo, n) * n - wo; return Vec3(r.x, std::nan(""), std::nan("")); }' \
+        04_reflection reflection '#include <cmath> { const Material& m = tracer.scene().material(hit); const Color c = tracer.trace(spawn_ray(hit, mirror_direction(wo, hit.normal)), depth + 1, RayKind::reflected, m.specular * m.specular_color); return Color(c.r, std::nan(""), std::nan("")); }'
+    grade "hostile-c-$mode" "$work/hostile-c-$mode-labs" 1 "${options[@]}" --timeout 2
+    check "hostile-c-$mode" "$common$secrets"'
+lost("04_reflection")
+for t in by_lab["04_reflection"]:
+    if t["name"].split(": ")[-1].split(".")[0] in ("MirrorDirection", "HiddenMirrorDirection", "Reflection", "HiddenReflection"):
+        ok(t["extra_data"]["status"] != "passed", "a vector with NaN in y and z passed: " + t["name"])'
+
     # The untouched stubs, each with an attack on the grader.
     mkdir -p "$work/redteam-$mode-labs"
     cp labs/*.cpp "$work/redteam-$mode-labs/"
@@ -149,6 +169,7 @@ ok(open(folder + "/results.json").read(1) == "{", "results.json was overwritten"
     python3 scripts/lib/inject.py "$work/redteam-$mode-labs" \
         02_shadows spawn_ray "$forge" \
         02_shadows is_lit "$overwrite" \
+        02_shadows lambert "$leave" \
         04_reflection mirror_direction "$read_secrets" \
         04_reflection reflection '#include <sys/mman.h> #include <cstring> static const bool corrupted = [] { void* ring = mmap(nullptr, 4096, PROT_READ | PROT_WRITE, MAP_SHARED, 3, 0); if (ring != MAP_FAILED) std::memset(ring, 0xff, 4096); return true; }(); (void)corrupted;' \
         06_fresnel fresnel_blend '#include <stdexcept> throw std::runtime_error("fake\ngrading link broken: the worker said goodbye\n[       OK ] FresnelBlend.Fake (0 ms)");' \
@@ -164,6 +185,8 @@ ok(statuses("01_ray_casting") == {"compile_error"}, "including the solution comp
 ok(statuses("03_blinn_phong") == {"compile_error"}, "a main() of its own linked: " + str(statuses("03_blinn_phong")))
 ok(statuses("05_refraction") == {"compile_error"}, ".incbin of a secret compiled: " + str(statuses("05_refraction")))
 ok(shown("02_shadows", "checkers seen:"), "the forging attack did not run")
+ok(shown("02_shadows", "left: lock -1, queue -1, socket -1, tmp -1") and shown("02_shadows", "shared memory -1"), "a file, a queue, a socket or shared memory was made: " + str([t["output"][:300] for t in by_lab["02_shadows"] if "left:" in t["output"]][:1]))
+ok("'"$mode"'" != "users" or not shown("02_shadows", "SHARES a session"), "the worker shares the grader'"'"'s session (and its terminal)")
 ok(shown("02_shadows", "could not overwrite"), "the overwriting attack did not run")
 ok(shown("04_reflection", "could not read"), "the reading attack did not run")
 ok(shown("06_fresnel", "could not run"), "the running attack did not run")
@@ -202,6 +225,14 @@ else
     git status --short -- tests solution
     git checkout -- tests solution
     failures=$((failures + 1))
+fi
+if [ -e /run/lock/hostile-lock ] || [ -e /tmp/hostile-kept ] || python3 -c 'import ctypes, os, sys; sys.exit(ctypes.CDLL(None).mq_open(b"/hostile-queue", os.O_RDONLY) != -1)'; then
+    echo "FAIL files or message queues left behind (/run/lock/hostile-lock, /tmp/hostile-kept, /hostile-queue)"
+    rm -f /run/lock/hostile-lock /tmp/hostile-kept
+    python3 -c 'import ctypes; ctypes.CDLL(None).mq_unlink(b"/hostile-queue")'
+    failures=$((failures + 1))
+else
+    echo "ok   nothing left in /run/lock, /tmp or the POSIX message queues"
 fi
 if pgrep hostile- > /dev/null; then
     echo "FAIL processes left behind: $(pgrep -l hostile- | head -5 | tr '\n' ' ')"

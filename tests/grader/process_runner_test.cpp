@@ -1,6 +1,7 @@
 // The process runner tells every way a child can end apart, and survives all of them.
 #include "grade/control_group.hpp"
 #include "grade/process_runner.hpp"
+#include "grade/syscall_filter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,7 @@ ProcessRun run_child(std::vector<std::string> arguments, Limits limits = {}) {
     arguments.insert(arguments.begin(), MISBEHAVING_CHILD);
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("runner_test_" + std::to_string(getpid()));
     std::filesystem::create_directories(folder);
-    ProcessRun run = run_process({arguments, folder, {{"WHITTED_RUNNER_TEST", "42"}}, limits, {}, {}, false, {}});
+    ProcessRun run = run_process({arguments, folder, {{"WHITTED_RUNNER_TEST", "42"}}, limits, {}, {}, false, {}, {}});
     std::filesystem::remove_all(folder);
     return run;
 }
@@ -123,7 +124,7 @@ TEST(ProcessRunner, PeakMemoryOfTheChildIsMeasured) {
 }
 
 TEST(ProcessRunner, MissingProgramFailsToStart) {
-    const ProcessRun run = run_process({{"/no/such/program"}, {}, {}, {}, {}, {}, false, {}});
+    const ProcessRun run = run_process({{"/no/such/program"}, {}, {}, {}, {}, {}, false, {}, {}});
     EXPECT_EQ(run.end, ProcessRun::End::failed_to_start);
     EXPECT_NE(run.start_error.find("No such file"), std::string::npos) << run.start_error;
 }
@@ -135,7 +136,7 @@ TEST(ProcessRunner, AControlGroupBoundsTheMemoryOfAllItsProcessesTogether) {
     std::string problem;
     std::optional<ControlGroup> group = ControlGroup::make(std::size_t{200} << 20, 64, problem);
     if (!group) GTEST_SKIP() << problem;
-    ProcessSpec spec{{MISBEHAVING_CHILD, "children", "100"}, {}, {}, short_limits(), {}, {}, false, {}};
+    ProcessSpec spec{{MISBEHAVING_CHILD, "children", "100"}, {}, {}, short_limits(), {}, {}, false, {}, {}};
     spec.limits.wall_seconds = 10;
     EXPECT_EQ(run_process(spec).exit_code, 0) << "outside the group";
     spec.join_groups = group->join_files();
@@ -162,4 +163,36 @@ TEST(ProcessRunner, LeftoversOfTheStudentCodesUserAreRemoved) {
     for (const auto& path : theirs) EXPECT_FALSE(std::filesystem::exists(path)) << path;
     EXPECT_TRUE(std::filesystem::exists(kept));
     std::filesystem::remove(kept);
+}
+
+// The workers' system call filter: reading works, every way of leaving something behind fails.
+TEST(SyscallFilter, AProgramMayReadButNotCreateWriteOrRemoveFiles) {
+    std::string why;
+    const std::vector<std::byte> filter = worker_syscall_filter(why);
+    ASSERT_FALSE(filter.empty()) << why;
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("filter_test_" + std::to_string(getpid()));
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "kept") << "kept";
+    const auto run = [&](const std::string& script) {
+        ProcessSpec spec;
+        spec.argv = {"/bin/sh", "-c", script};
+        spec.working_directory = folder;
+        spec.syscall_filter = filter;
+        spec.limits.wall_seconds = 10;
+        return run_process(spec);
+    };
+    const ProcessRun reading = run("cat kept");
+    EXPECT_EQ(reading.exit_code, 0) << reading.output;
+    EXPECT_EQ(reading.output, "kept");
+    for (const std::string script : {"echo x > made", "echo x >> kept", "mkdir made", "ln -s kept made", "rm kept", "mv kept made",
+                                     "chmod 777 kept", "mkfifo made", ": > kept"}) {
+        const ProcessRun run_of_script = run(script);
+        EXPECT_NE(run_of_script.exit_code, 0) << script << ": " << run_of_script.output;
+    }
+    std::vector<std::string> left;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) left.push_back(entry.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"kept"});
+    std::ifstream kept(folder / "kept");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "kept");
+    std::filesystem::remove_all(folder);
 }

@@ -52,8 +52,33 @@ TEST(ResultsJson, HasGradescopesFieldsAndHidesHiddenTests) {
     EXPECT_EQ(hidden["status"], "failed");
     EXPECT_EQ(hidden["visibility"], "hidden");
     EXPECT_EQ(json["tests"][0]["visibility"], "visible");
-    EXPECT_EQ(hidden["output"], "not implemented: labs/02_shadows.cpp:14: spawn_ray() is not implemented yet\n");
+    EXPECT_EQ(hidden["output"], "failed\nThe details of hidden tests are not shown.\n");
+    EXPECT_EQ(hidden["extra_data"]["status"], "failed");
     EXPECT_FALSE(json.contains("execution_time"));
+}
+
+// The student's code chooses how a test ends (crash, timeout, exception, not
+// implemented, wrong answer) and may choose from a hidden test's inputs: a
+// student sees only passed or failed of a hidden test, in every place.
+TEST(ResultsJson, AHiddenTestShowsOnlyPassedOrFailed) {
+    for (const Status status : {Status::failed, Status::not_implemented, Status::exception, Status::crash, Status::timeout}) {
+        GradingResult result = sample();
+        result.labs[0].tests[1].outcome.status = status;
+        const nlohmann::json json = nlohmann::json::parse(results_json(result));
+        const std::string name(status_name(status));
+        EXPECT_EQ(json["tests"][1]["extra_data"]["status"], "failed") << name;
+        EXPECT_EQ(json["tests"][1]["tags"][2], "failed") << name;
+        EXPECT_EQ(json["tests"][1]["output"], "failed\nThe details of hidden tests are not shown.\n") << name;
+        EXPECT_EQ(status_counts(result.labs[0], Audience::student), "1/2 passed (1 failed)") << name;
+        EXPECT_EQ(json["output"].get<std::string>().find(std::string(status_label(status))), 
+                  status == Status::failed ? json["output"].get<std::string>().find("failed") : std::string::npos) << name;
+        const std::string html = html_report(result);
+        EXPECT_NE(html.find("<span class=\"badge failed\">failed</span><b>HiddenShading.Lambert"), std::string::npos) << name;
+        EXPECT_EQ(status_counts(result.labs[0], Audience::instructor), "1/2 passed (1 " + std::string(status_label(status)) + ")");
+    }
+    GradingResult skipped = sample();
+    skipped.labs[0].tests[1].outcome.status = Status::skipped; // decided by the visible tests: shown as it is
+    EXPECT_EQ(status_counts(skipped.labs[0], Audience::student), "1/2 passed (1 skipped)");
 }
 
 TEST(ResultsJson, SameResultGivesTheSameBytes) { EXPECT_EQ(results_json(sample()), results_json(sample())); }

@@ -83,9 +83,10 @@ std::string heat_legend() {
 // One test; its id is the test's number in results.json ("test-2.5").
 std::string test_card(const LabResult& lab, const ScoredTest& test, const std::string& number) {
     const TestOutcome& o = test.outcome;
+    const Status shown = student_status(o);
     std::string html = "<div class=\"test\" id=\"test-" + number + "\"><span class=\"points\">" + format_points(test.score_cents) + " / " +
-                       format_points(test.max_cents) + "</span><span class=\"badge " + std::string(status_name(o.status)) +
-                       "\">" + std::string(status_label(o.status)) + "</span><b>" + escape(o.name) + "</b> &middot; " +
+                       format_points(test.max_cents) + "</span><span class=\"badge " + std::string(status_name(shown)) +
+                       "\">" + std::string(status_label(shown)) + "</span><b>" + escape(o.name) + "</b> &middot; " +
                        escape(lab.title) + (is_hidden(o.name) ? " &middot; <i>hidden test</i>" : "") + "\n";
     // The student sees this page: a hidden test's message, output, image numbers or pictures would tell its
     // inputs, its expected values or its reference picture.
@@ -116,7 +117,7 @@ std::string html_report(const GradingResult& result, const std::string& problem)
     html += "<table><tr><th>lab</th><th>points</th><th>tests</th></tr>\n";
     for (const LabResult& lab : result.labs) {
         html += "<tr><td>" + escape(lab.title) + "</td><td>" + format_points(lab.score_cents) + " / " +
-                format_points(lab.max_cents) + "</td><td>" + escape(status_counts(lab)) + "</td></tr>\n";
+                format_points(lab.max_cents) + "</td><td>" + escape(status_counts(lab, Audience::student)) + "</td></tr>\n";
     }
     html += "</table>\n";
     std::string notes;

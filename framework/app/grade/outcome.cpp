@@ -52,4 +52,15 @@ std::string image_summary(const ImageNumbers& image) {
 
 bool is_hidden(const std::string& test_name) { return test_name.rfind("Hidden", 0) == 0; }
 
+Status student_status(const TestOutcome& outcome) {
+    if (!is_hidden(outcome.name)) return outcome.status;
+    switch (outcome.status) {
+    case Status::passed:
+    case Status::compile_error:
+    case Status::missing:
+    case Status::skipped: return outcome.status;
+    default: return Status::failed;
+    }
+}
+
 } // namespace whitted::grade

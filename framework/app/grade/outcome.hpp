@@ -57,4 +57,10 @@ struct TestOutcome {
 /// True for tests of suites whose names start with "Hidden".
 bool is_hidden(const std::string& test_name);
 
+/// The status a student is shown. Of a hidden test only passed or failed (or
+/// what the files decided: compile_error, missing, skipped): the student's
+/// code chooses among crash, timeout, exception, not_implemented and failed,
+/// so showing which would tell it something of the hidden inputs each time.
+Status student_status(const TestOutcome& outcome);
+
 } // namespace whitted::grade

@@ -1,4 +1,5 @@
 #include "grade/process_runner.hpp"
+#include "grade/syscall_filter.hpp"
 
 #include <cerrno>
 #include <chrono>
@@ -63,7 +64,13 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
 // In the child, between fork and exec: only async-signal-safe calls.
 [[noreturn]] void become_child(const ProcessSpec& spec, char** argv, char** envp, int output_fd, int error_fd,
                                const int* descriptors, std::size_t descriptor_count, const int* groups, std::size_t group_count) {
-    setpgid(0, 0);
+    // A session of its own, so also a process group of its own: no controlling terminal, so the program
+    // cannot open /dev/tty to write on the grader's terminal or push input into it (TIOCSTI).
+    if (setsid() < 0) {
+        const int error = errno;
+        [[maybe_unused]] auto written = write(error_fd, &error, sizeof error);
+        _exit(127);
+    }
     for (std::size_t i = 0; i < group_count; ++i) {
         if (write(groups[i], "0", 1) != 1) { // "0": this process; its children follow it
             const int error = errno;
@@ -103,6 +110,12 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
         const int error = errno;
         [[maybe_unused]] auto written = write(error_fd, &error, sizeof error);
         _exit(127);
+    }
+    if (!spec.syscall_filter.empty()) {
+        if (const int error = install_syscall_filter(spec.syscall_filter); error != 0) {
+            [[maybe_unused]] auto written = write(error_fd, &error, sizeof error);
+            _exit(127);
+        }
     }
     execvpe(argv[0], argv, envp);
     const int error = errno;
@@ -172,7 +185,6 @@ Running start_child(const ProcessSpec& spec) {
         r.run.start_error = std::string("fork failed: ") + std::strerror(errno);
         return r;
     }
-    setpgid(pid, pid); // also done by the child; whichever runs first wins
     r.pid = pid;
     r.output_fd = output[0];
     r.start_error_fd = start_error[0];
@@ -345,7 +357,7 @@ void kill_user_processes(unsigned uid) {
 
 int remove_user_leftovers(unsigned uid) {
     int removed = 0;
-    for (const char* shared : {"/tmp", "/var/tmp", "/dev/shm"}) {
+    for (const char* shared : {"/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/var/lock", "/dev/mqueue"}) {
         std::error_code error;
         for (const std::filesystem::directory_entry& entry : std::filesystem::directory_iterator(shared, error)) {
             struct stat info {};

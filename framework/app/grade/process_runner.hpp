@@ -41,6 +41,7 @@ struct ProcessSpec {
     std::vector<int> descriptors;     // handed to the program as descriptors 3, 4, ...; the grader's copies are closed once it started
     bool clean_environment = false;   // start from an empty environment (PATH=/usr/bin:/bin, LC_ALL=C), not the grader's
     std::vector<std::filesystem::path> join_groups; // cgroup.procs files to join before the limits are set (control_group.hpp)
+    std::vector<std::byte> syscall_filter; // a seccomp program installed just before exec (syscall_filter.hpp); empty: none
 };
 
 /// How a run ended. Core dumps are always off (RLIMIT_CORE = 0).
@@ -88,8 +89,9 @@ int kill_leftover_children();
 void kill_user_processes(unsigned uid);
 
 /// Removes what the user `uid` left where every user may write (/tmp, /var/tmp,
-/// /dev/shm: the entries it owns there) and its System V shared memory, message
-/// queues and semaphores. Call once its processes are gone. Returns how many.
+/// /dev/shm, /run/lock, POSIX message queues where /dev/mqueue is mounted: the
+/// entries it owns there) and its System V shared memory, message queues and
+/// semaphores. Call once its processes are gone. Returns how many.
 int remove_user_leftovers(unsigned uid);
 
 /// The number of processes and threads the user owns now (what RLIMIT_NPROC counts).

@@ -17,6 +17,9 @@ double points(long cents) { return static_cast<double>(cents) / 100.0; }
 
 std::string test_output(const ScoredTest& test) {
     const TestOutcome& o = test.outcome;
+    if (is_hidden(o.name))
+        return std::string(status_label(student_status(o))) +
+               (o.status == Status::passed ? "\n" : "\nThe details of hidden tests are not shown.\n");
     std::string text = std::string(status_label(o.status));
     if (!o.message.empty()) text += ": " + o.message;
     text += "\n";
@@ -29,9 +32,10 @@ std::string test_output(const ScoredTest& test) {
 
 } // namespace
 
-std::string status_counts(const LabResult& lab) {
+std::string status_counts(const LabResult& lab, Audience audience) {
     std::map<Status, int> counts;
-    for (const ScoredTest& test : lab.tests) ++counts[test.outcome.status];
+    for (const ScoredTest& test : lab.tests)
+        ++counts[audience == Audience::student ? student_status(test.outcome) : test.outcome.status];
     std::string text = std::to_string(counts[Status::passed]) + "/" + std::to_string(lab.tests.size()) + " passed";
     std::string others;
     for (Status status : all_statuses())
@@ -40,10 +44,10 @@ std::string status_counts(const LabResult& lab) {
     return others.empty() ? text : text + " (" + others + ")";
 }
 
-std::string lab_summary_line(const LabResult& lab) {
+std::string lab_summary_line(const LabResult& lab, Audience audience) {
     char line[512];
     std::snprintf(line, sizeof line, "%-15s %7s / %-7s %s", lab.lab.c_str(), format_points(lab.score_cents).c_str(),
-                  format_points(lab.max_cents).c_str(), status_counts(lab).c_str());
+                  format_points(lab.max_cents).c_str(), status_counts(lab, audience).c_str());
     return line;
 }
 
@@ -52,7 +56,7 @@ std::string results_json(const GradingResult& result, const std::string& problem
     root["score"] = points(problem.empty() ? result.score_cents : 0);
     std::string output;
     if (!problem.empty()) output = "The grader failed; this is not your fault. Please tell your instructor.\n" + problem + "\n";
-    for (const LabResult& lab : result.labs) output += lab_summary_line(lab) + "\n";
+    for (const LabResult& lab : result.labs) output += lab_summary_line(lab, Audience::student) + "\n";
     if (problem.empty()) output += "total: " + format_points(result.score_cents) + " / " + format_points(result.max_cents) + "\n";
     root["output"] = output;
     root["output_format"] = "text";
@@ -73,9 +77,10 @@ std::string results_json(const GradingResult& result, const std::string& problem
             entry["status"] = o.status == Status::passed ? "passed" : "failed";
             entry["output"] = test_output(test);
             entry["output_format"] = "text";
-            entry["tags"] = {lab.lab, test.rule.empty() ? "unscored" : test.rule, std::string(status_name(o.status))};
+            const std::string shown = std::string(status_name(student_status(o)));
+            entry["tags"] = {lab.lab, test.rule.empty() ? "unscored" : test.rule, shown};
             entry["visibility"] = is_hidden(o.name) ? "hidden" : "visible";
-            entry["extra_data"] = {{"lab", lab.lab}, {"status", std::string(status_name(o.status))}, {"image", test.image_test}};
+            entry["extra_data"] = {{"lab", lab.lab}, {"status", shown}, {"image", test.image_test}};
             if (!lab.compile_errors.empty() && o.status == Status::compile_error) entry["output"] = test_output(test) + "\n" + lab.compile_errors;
             root["tests"].push_back(entry);
         }

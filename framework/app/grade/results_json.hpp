@@ -11,10 +11,13 @@ namespace whitted::grade {
 /// results.json's text. `problem` is a grader failure to report instead of results (score 0).
 std::string results_json(const GradingResult& result, const std::string& problem = {});
 
-/// "24/25 passed: 24 passed, 1 crash".
-std::string status_counts(const LabResult& lab);
+/// Who reads a summary: the student sees hidden tests only as passed or failed (student_status).
+enum class Audience { student, instructor };
 
-/// One line per lab, as in the top-level "output" and the terminal table.
-std::string lab_summary_line(const LabResult& lab);
+/// "24/25 passed (1 crash)".
+std::string status_counts(const LabResult& lab, Audience audience);
+
+/// One line per lab: the top-level "output" (student) and the terminal table (instructor).
+std::string lab_summary_line(const LabResult& lab, Audience audience);
 
 } // namespace whitted::grade

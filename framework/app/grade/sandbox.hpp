@@ -46,14 +46,17 @@ struct Sandbox {
     std::vector<std::string> gaps;         // for the instructor: the fences that are not, and why
     std::string exposed;                   // for the instructor: what the student's code could read, or empty
     std::string bwrap_error;               // for the instructor: what bwrap said when it failed
+    std::vector<std::byte> syscall_filter; // the workers' seccomp program (syscall_filter.hpp); empty where none could be made
 
     /// The spec that runs `spec` inside the fences, seeing `readable` (read-only) and `writable` (if given) besides the system.
+    /// Without `writable` it is a worker, which also gets the system call filter.
     ProcessSpec wrap(ProcessSpec spec, const std::vector<std::filesystem::path>& readable,
                      const std::optional<std::filesystem::path>& writable) const;
 
     /// After runs of the student's code: kills every process of its control
     /// group and of its user (when it has them), then whatever is left among
-    /// the grader's children.
+    /// the grader's children, and removes what its user left where every user
+    /// may write, so that no run passes anything on to the next.
     void end_runs() const;
 
     /// One line for the instructor: "sandbox mode: fence, fence; gap".
