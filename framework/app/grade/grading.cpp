@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -46,6 +47,23 @@ std::vector<fs::path> secrets(const GradingSetup& setup, const WorkerKit& kit) {
             break;
         }
     for (const auto& [lab, checker] : kit.checkers) files.push_back(checker);
+    // The tree's git history holds the solution too; a worktree's lives in another repository ("gitdir: ...").
+    const fs::path git = setup.instructor_tree / ".git";
+    std::error_code error;
+    if (fs::is_directory(git, error)) {
+        files.push_back(git / "HEAD");
+    } else if (fs::is_regular_file(git, error)) {
+        std::ifstream link(git);
+        std::string line;
+        if (std::getline(link, line) && line.rfind("gitdir: ", 0) == 0) {
+            fs::path gitdir = line.substr(8);
+            if (gitdir.is_relative()) gitdir = setup.instructor_tree / gitdir;
+            files.push_back(gitdir / "HEAD");
+            std::ifstream common(gitdir / "commondir");
+            if (std::string shared; std::getline(common, shared))
+                files.push_back((fs::path(shared).is_relative() ? gitdir / shared : fs::path(shared)) / "HEAD");
+        }
+    }
     return files;
 }
 
