@@ -91,6 +91,7 @@ handout:
 
 # Instructors: prove the tests catch every stub and every catalogued mistake.
 proofs:
+	@bash scripts/install-deps.sh --proofs
 	@bash scripts/prove-tests.sh
 else
 # The student handout has no reference solution: these are the instructor's.

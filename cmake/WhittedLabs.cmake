@@ -1,7 +1,8 @@
 # The labs, and how the build mixes implementations of them.
 #
-# Every lab is one file with the same name in solution/ (the reference), in
-# labs/ (the student's) and in tests/mistakes/<lab>/ (catalogued mistakes).
+# Every lab is one file with the same name in solution/ (the reference) and in
+# labs/ (the student's); tests/mistakes/<lab>/ holds patches of the reference
+# (catalogued mistakes).
 # Each file becomes an object library, so an executable can take lab k from one
 # implementation and every other lab from another: that is how one lab is
 # graded in isolation.

@@ -2,7 +2,7 @@
 # Renders every picture that the lab handouts (docs/labs/*.md) show:
 #   - each lab's goal picture: its scene at its stage, rendered by the reference;
 #   - each gallery entry: a scene rendered by the reference with one catalogued
-#     mistake (tests/mistakes/<lab>/<name>.cpp), plus the correct picture of that
+#     mistake (tests/mistakes/<lab>/<name>.patch), plus the correct picture of that
 #     scene and stage when it is not already a goal picture, plus a difference
 #     picture for the mistakes that are hard to see.
 # Instructors only: it needs solution/ and tests/mistakes/. Rerun it after any
