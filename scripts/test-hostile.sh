@@ -17,15 +17,19 @@
 #                 earlier grading of the solution, overwriting the
 #                 reference images, the rubric, results.json and the checker's
 #                 report, an orphan left sleeping;
+#   hostile-c     vectors and colours right in x with NaN in y and z;
 #   redteam       the untouched stubs with an attack per lab: including the
 #                 solution, forging the checker's report from its command
 #                 line, a main() of its own with fake tests, reading the
 #                 answers, asm(".incbin") of a secret, running the reference
 #                 renderer and the checker, writing over the link's shared
-#                 memory, an exception dressed as the checker's own words;
+#                 memory, an exception dressed as the checker's own words,
+#                 leaving files, queues and shared memory for a later run,
+#                 opening a socket, sharing the grader's session (terminal);
 # and once: files (lab files that are links to the solution and to a secret, a
-# FIFO, a folder, an oversized file, #include "/dev/zero") and a labs/ folder
-# that is a link to the solution.
+# FIFO, a folder, an oversized file, #include "/dev/zero"), GoogleTest in the
+# lab files (its exceptions, tests of its own) and a labs/ folder that is a
+# link to the solution.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if ! command -v bwrap > /dev/null; then bash scripts/install-deps.sh --sandbox || true; fi
@@ -60,7 +64,7 @@ def shown(lab, text): return any(text in t["output"] for t in by_lab[lab])
 def lost(lab): ok(lab_score(lab) < lab_max(lab), lab + ": full marks for a hostile lab")
 # How a hidden test ended is chosen by the student code, maybe from its inputs: only passed or failed is shown.
 import re
-for label, name in re.findall(r'<span class="badge [^"]*">([^<]*)</span><b>(Hidden[^<]*)</b>', html):
+for label, name in re.findall(r"<span class=\"badge [^\"]*\">([^<]*)</span><b>(Hidden[^<]*)</b>", html):
     ok(label in ("passed", "failed", "compile error", "missing", "skipped"), "a hidden test shows a status its code chose: " + name + ": " + label)
 for t in results["tests"]:
     if t["visibility"] == "hidden":
@@ -212,6 +216,19 @@ ok(results["score"] == 0, "points for files that are not lab files: " + str(resu
 ok(statuses("01_ray_casting") == {"compile_error"}, "#include \"/dev/zero\": " + str(statuses("01_ray_casting")))
 for lab, what in (("02_shadows", "not a regular file"), ("03_blinn_phong", "symbolic link"), ("04_reflection", "symbolic link"), ("05_refraction", "not a regular file"), ("06_fresnel", "larger than")):
     ok(statuses(lab) == {"missing"} and shown(lab, what), lab + ": " + str(statuses(lab)) + ", expected missing: " + what)'
+# GoogleTest in the student's file: its "already reported" exception thrown by a stub, and tests of its own
+# (one named as a public test): the worker has no GoogleTest, so neither links.
+mkdir -p "$work/gtest-labs"
+cp labs/*.cpp "$work/gtest-labs/"
+python3 scripts/lib/inject.py "$work/gtest-labs" 01_ray_casting primary_ray \
+    '#include <gtest/gtest.h> throw ::testing::AssertionException(::testing::TestPartResult(::testing::TestPartResult::kFatalFailure, "x", 1, "already reported"));'
+printf '#include <gtest/gtest.h>\nTEST(IsLit, NothingInTheWayMeansLit) { SUCCEED(); }\nTEST(HiddenIsLit, Forged) { SUCCEED(); }\n' >> "$work/gtest-labs/02_shadows.cpp"
+grade gtest "$work/gtest-labs" 1 "${file_options[@]}"
+check gtest "$common$secrets"'
+ok(results["score"] == 0, "points for GoogleTest in the lab files: " + str(results["score"]))
+ok(statuses("01_ray_casting") == {"compile_error"}, "GoogleTest exception: " + str(statuses("01_ray_casting")))
+ok(statuses("02_shadows") == {"compile_error"}, "tests of its own: " + str(statuses("02_shadows")))
+ok(not any("Forged" in t["name"] for t in results["tests"]), "a test the submission registered is listed")'
 grade linked-folder "$work/linked-submission" 1 "${file_options[@]}"
 check linked-folder "$common$secrets"'
 ok(results["score"] == 0, "points for a labs/ folder linked to the solution: " + str(results["score"]))'

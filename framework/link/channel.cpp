@@ -89,6 +89,11 @@ std::uint64_t Channel::other_position(const std::atomic<std::uint64_t>& position
     return other;
 }
 
+void Channel::check_positions() const {
+    other_position(in_->written, read_, true);
+    other_position(out_->read, written_, false);
+}
+
 bool Channel::can_read() const { return other_position(in_->written, read_, true) != read_; }
 bool Channel::can_write() const { return written_ - other_position(out_->read, written_, false) < kRingBytes; }
 

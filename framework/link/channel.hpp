@@ -50,6 +50,8 @@ class Channel {
     void write(const std::byte* data, std::size_t size);
     /// Receives at least one byte (at most `capacity`), waiting until there is one.
     std::size_t read_some(std::byte* data, std::size_t capacity);
+    /// Throws LinkError when the positions the other side published are impossible (it wrote over them).
+    void check_positions() const;
 
     struct Ring;
 

@@ -247,6 +247,13 @@ void Link::serve_until_closed() {
 void Link::say_goodbye() {
     std::lock_guard lock(mutex_);
     try {
+        // The last reply may have been followed by writing over the shared memory: that breaks the link too.
+        channel_.check_positions();
+    } catch (const LinkError& e) {
+        if (broken_.empty()) broken_ = e.what();
+        return;
+    }
+    try {
         write_frame(channel_, FrameType::bye, {});
     } catch (const LinkError&) {
         // the other side is gone already

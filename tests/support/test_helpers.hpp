@@ -21,6 +21,7 @@ inline ::testing::AssertionResult near(const Vec3& actual, const Vec3& expected,
     out.precision(17);
     out << "got (" << actual.x << ", " << actual.y << ", " << actual.z << "), expected (" << expected.x << ", "
         << expected.y << ", " << expected.z << ") within " << tolerance;
+    if (!is_finite(actual)) out << ": NaN or infinity where a finite number was expected";
     return ::testing::AssertionFailure() << out.str();
 }
 

@@ -118,7 +118,7 @@ TEST(Reflection, ReflectedRaysStartOffTheMirrorSoTheyDoNotHitItAgain) {
     const int rays = 2000;
     for (int i = 0; i < rays; ++i) {
         const Ray eye{Point3(1000.0 + i * 0.37, 1020.0, -1000.0 - i * 0.11), glm::normalize(Vec3(0.3, -1.0, 0.2 + i * 1e-3))};
-        if (std::abs(rig.trace(eye).x - 0.5) > 1e-9) ++wrong;
+        if (!near(rig.trace(eye), Color(0.5), 1e-9)) ++wrong;
     }
     EXPECT_EQ(wrong, 0) << "pixels of the mirror darkened by self-intersection";
     EXPECT_EQ(rig.stats.reflected, static_cast<std::uint64_t>(rays)) << "one reflected ray per eye ray";

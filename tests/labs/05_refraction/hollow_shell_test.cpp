@@ -26,6 +26,7 @@ TEST(Refraction, AHollowShellKeepsTheRaysImpactParameterInsideTheCavity) {
     const Scene scene(std::move(data));
     const Color through_centre = trace_one(scene, Ray{Point3(0.2, 0.0, 5.0), Vec3(0.0, 0.0, -1.0)}, 5);
     const Color past_ball = trace_one(scene, Ray{Point3(0.5, 0.0, 5.0), Vec3(0.0, 0.0, -1.0)}, 5);
+    ASSERT_TRUE(is_finite(through_centre) && is_finite(past_ball)) << "NaN or infinity in a colour";
     EXPECT_GT(through_centre.x, 0.8) << "at b = 0.2 the ray must reach the red ball in the cavity";
     EXPECT_LT(through_centre.z, 0.1);
     EXPECT_LT(past_ball.x, 0.1) << "at b = 0.5 the ray must pass the red ball: at the inner wall (front_face "

@@ -108,7 +108,7 @@ TEST(Refraction, RaysThroughTheCentreOfAFarAwayBallReachTheFarWall) {
     int wrong = 0;
     for (int i = 0; i < 500; ++i) {
         const Vec3 n = direction_at(5.0 + i * 0.33, i * 7.1);
-        if (std::abs(rig.trace(Ray{centre + 10.0 * n, -n}).x - 0.25) > 1e-9) ++wrong;
+        if (!near(rig.trace(Ray{centre + 10.0 * n, -n}), Color(0.25), 1e-9)) ++wrong;
     }
     EXPECT_EQ(wrong, 0) << "rays through the centre that did not come out at 0.25";
 }

@@ -34,6 +34,7 @@ TEST(FresnelBlend, WeightsTheReflectedRayKrAndTheRefractedOneOneMinusKrTimesT) {
     TracerRig rig(lamps_around_glass(0.5, 1.5), 6, 5);
     const Vec3 wo = direction_at(45.0);
     const Color c = fresnel_blend(rig.tracer, hit_seen_from(Point3(0.0), kUp, wo), wo, 1);
+    ASSERT_TRUE(is_finite(c)) << "NaN or infinity in (" << c.x << ", " << c.y << ", " << c.z << ")";
     EXPECT_NEAR(c.x, 0.050240, 1e-6) << "the reflected ray's weight must be Kr";
     EXPECT_NEAR(c.z, (1.0 - 0.050240) * 0.5, 1e-6) << "the refracted ray's weight must be (1 - Kr) T";
     EXPECT_EQ(rig.stats.reflected, 1u);
@@ -46,6 +47,7 @@ TEST(FresnelBlend, WithFullTransmittanceTheWeightsAddUpToOne) {
     for (double theta : {0.0, 20.0, 45.0, 70.0, 85.0}) {
         const Vec3 wo = direction_at(theta, 15.0);
         const Color c = fresnel_blend(rig.tracer, hit_seen_from(Point3(0.0), kUp, wo), wo, 1);
+        ASSERT_TRUE(is_finite(c)) << "NaN or infinity in (" << c.x << ", " << c.y << ", " << c.z << ")";
         EXPECT_NEAR(c.x + c.z, 1.0, 1e-12) << "reflected + transmitted light at " << theta << " degrees";
         EXPECT_NEAR(c.x, fresnel_reflectance(wo.z, 1.0, 1.5), 1e-12) << "Kr at " << theta << " degrees";
     }
@@ -60,6 +62,7 @@ TEST(FresnelBlend, LeavingGlassUsesTheGlassToAirReflectance) {
     const Hit inside = hit_seen_from(Point3(0.0), kUp, wo);
     ASSERT_FALSE(inside.front_face);
     const Color c = fresnel_blend(rig.tracer, inside, wo, 1);
+    ASSERT_TRUE(is_finite(c)) << "NaN or infinity in (" << c.x << ", " << c.y << ", " << c.z << ")";
     EXPECT_NEAR(c.z, 0.0551902, 1e-7) << "inside the glass Kr is the glass -> air reflectance";
     EXPECT_NEAR(c.x, 0.8 * (1.0 - 0.0551902), 1e-7);
 }
