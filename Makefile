@@ -51,11 +51,19 @@ bench: configure
 
 # With the reference solution (the instructor's tree): every test, plainly.
 # Without it (the student handout): every test, then each lab's progress.
+# make test LAB=3: only lab 3's tests (built and run), for a student working on one lab.
+ifneq ($(LAB),)
+test: configure
+	@echo "$(LAB)" | grep -qE '^[0-9]+$$' || { echo "make test LAB=N: N is a lab number (see ./$(BUILD_DIR)/whitted labs)"; exit 2; }
+	@cmake --build $(BUILD_DIR) -j$(JOBS) --target $(if $(wildcard solution/01_ray_casting.cpp),lab$(LAB)_reference,lab$(LAB))
+	@cd $(BUILD_DIR) && ctest -L '^lab$(LAB)$$' --output-on-failure -j$(JOBS)
+else
 test: build
 ifneq ($(wildcard solution/01_ray_casting.cpp),)
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
 else
 	@bash scripts/lab-progress.sh $(BUILD_DIR)
+endif
 endif
 
 # Every test again, built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/).

@@ -43,6 +43,12 @@ make render > "$work/render2.log" 2>&1 || { cat "$work/render2.log"; fail "make 
 grep -q "rendering stage 3" "$work/render2.log" || fail "make render did not say it renders stage 3"
 [ -s whitted_1980.png ] || fail "no whitted_1980.png"
 grep -E "^note|lab [456]" "$work/render2.log"
+# One lab's tests alone: lab 3's pass now, lab 4's (still a stub) do not; a lab that is no number is refused.
+make test LAB=3 > "$work/lab3.log" 2>&1 || { tail -30 "$work/lab3.log"; fail "make test LAB=3 failed with labs 1-3 done"; }
+grep -q "100% tests passed" "$work/lab3.log" || fail "make test LAB=3 did not run lab 3's tests"
+if make test LAB=4 > "$work/lab4.log" 2>&1; then fail "make test LAB=4 passed with lab 4's stub"; fi
+grep -q "mirror_direction() is not implemented yet" "$work/lab4.log" || fail "make test LAB=4 did not show the stub's message"
+if make test LAB=three > /dev/null 2>&1; then fail "make test LAB=three was accepted"; fi
 
 echo "test-handout: 4. every lab done"
 cp "$root"/solution/0[456]_*.cpp labs/
