@@ -243,7 +243,7 @@ else
     git checkout -- tests solution
     failures=$((failures + 1))
 fi
-if [ -e /run/lock/hostile-lock ] || [ -e /tmp/hostile-kept ] || python3 -c 'import ctypes, os, sys; sys.exit(ctypes.CDLL(None).mq_open(b"/hostile-queue", os.O_RDONLY) != -1)'; then
+if [ -e /run/lock/hostile-lock ] || [ -e /tmp/hostile-kept ] || python3 -c 'import ctypes, os, sys; sys.exit(0 if ctypes.CDLL(None).mq_open(b"/hostile-queue", os.O_RDONLY) != -1 else 1)'; then
     echo "FAIL files or message queues left behind (/run/lock/hostile-lock, /tmp/hostile-kept, /hostile-queue)"
     rm -f /run/lock/hostile-lock /tmp/hostile-kept
     python3 -c 'import ctypes; ctypes.CDLL(None).mq_unlink(b"/hostile-queue")'
