@@ -99,6 +99,8 @@ for test in results["tests"]:
 def lab_score(lab): return round(sum(t["score"] for t in by_lab[lab]), 2)
 def lab_max(lab): return round(sum(t["max_score"] for t in by_lab[lab]), 2)
 def statuses(lab): return {t["extra_data"]["status"] for t in by_lab[lab]}
+# A hidden test shows only passed or failed (or compile_error, missing, skipped): the visible tests tell how the code ended.
+def visible_statuses(lab): return {t["extra_data"]["status"] for t in by_lab[lab] if t["visibility"] != "hidden"}
 def ok(condition, text):
     if not condition: problems.append(text)
 exec(conditions)
