@@ -11,6 +11,11 @@
 #include <fstream>
 #include <unistd.h>
 #include <optional>
+#include <random>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <thread>
+#include <vector>
 
 using namespace whitted::grade;
 
@@ -195,4 +200,44 @@ TEST(SyscallFilter, AProgramMayReadButNotCreateWriteOrRemoveFiles) {
     std::ifstream kept(folder / "kept");
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "kept");
     std::filesystem::remove_all(folder);
+}
+
+// What a worker (and a student's lab code) may do under the filter: threads, memory, random numbers, sleeping,
+// reading a file, printing. glibc starts threads with clone3 and falls back to clone only on ENOSYS.
+TEST(SyscallFilter, ThreadsMemoryTimeAndReadingStillWork) {
+    std::string why;
+    const std::vector<std::byte> filter = worker_syscall_filter(why);
+    ASSERT_FALSE(filter.empty()) << why;
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        if (install_syscall_filter(filter) != 0) _exit(10);
+        try {
+            int counted = 0;
+            std::thread thread([&counted] { counted = 1; });
+            thread.join();
+            if (counted != 1) _exit(11);
+            std::random_device device;
+            (void)device();
+            std::vector<char> block(std::size_t{64} << 20, 1);
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            std::ifstream file("/proc/self/status");
+            std::string line;
+            if (!std::getline(file, line) || block[12345] != 1) _exit(12);
+            std::printf("%s", "");
+            std::fflush(stdout);
+            // And what it may not: a file of its own, a socket.
+            if (std::fopen("/tmp/whitted-filter-test-made", "w") != nullptr) _exit(13);
+            if (socket(AF_UNIX, SOCK_STREAM, 0) >= 0) _exit(14);
+            int pair[2];
+            if (socketpair(AF_UNIX, SOCK_STREAM, 0, pair) == 0) _exit(15);
+        } catch (...) {
+            _exit(16);
+        }
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "10 install, 11 thread, 12 memory/file, 13 file made, 14 socket, 15 socketpair, 16 exception";
 }

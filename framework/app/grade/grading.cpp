@@ -163,6 +163,11 @@ public:
                 failures_[name] = {Status::compile_error, std::string("the worker of ") + name + " " + e.what(), ""};
             }
         }
+        // The build folder belongs to the student code's user: a test's worker could leave something there for the
+        // next one. Nothing of it is needed once the workers are out (the compilers' processes are gone).
+        std::error_code removed;
+        fs::remove_all(build, removed);
+        if (removed) throw GraderFailure("cannot remove the student's build folder " + build.string() + ": " + removed.message());
         if (group_ && !group_->set_memory(setup_.test_limits.address_space))
             throw GraderFailure("cannot lower the memory ceiling of the student's code's control group for the tests");
     }

@@ -1,6 +1,6 @@
-// A seccomp filter for the student's worker: the system calls a worker never
-// needs, and that would let it leave something behind or reach out, fail with
-// EPERM.
+// A seccomp filter for the student's worker: an allow list of the system calls
+// a worker needs (computing, threads, reading files, its own descriptors);
+// every other call fails with ENOSYS.
 //
 // Why: a worker only computes and answers over the descriptors it was given.
 // Without namespaces (users mode) its user id could still create files where
