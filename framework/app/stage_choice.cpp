@@ -28,14 +28,15 @@ std::optional<int> choose_stage(std::optional<int> asked, std::optional<Pass> pa
     if (pass) {
         // A pass calls the labs up to its own; secondary rays follow --stage.
         const PassInfo& info = pass_info(*pass);
-        if (asked && *asked < info.min_stage) {
+        const int min_stage = stage_number(info.min_stage);
+        if (asked && *asked < min_stage) {
             std::fprintf(stderr, "whitted: --pass %s shows what labs 1 to %d compute, so it needs --stage %d or more\n",
-                         std::string(info.name).c_str(), info.min_stage, info.min_stage);
+                         std::string(info.name).c_str(), min_stage, min_stage);
             return std::nullopt;
         }
-        if (ready < info.min_stage) {
+        if (ready < min_stage) {
             std::fprintf(stderr, "whitted: --pass %s calls the code of labs 1 to %d, and these are not done yet:\n%s",
-                         std::string(info.name).c_str(), info.min_stage, missing_labs(labs, info.min_stage).c_str());
+                         std::string(info.name).c_str(), min_stage, missing_labs(labs, min_stage).c_str());
             return std::nullopt;
         }
     }
@@ -51,9 +52,9 @@ std::optional<int> choose_stage(std::optional<int> asked, std::optional<Pass> pa
         std::fprintf(stderr, "whitted: nothing can be rendered before lab 1 is done:\n%s", missing_labs(labs, 1).c_str());
         return std::nullopt;
     }
-    if (ready < 6) {
+    if (ready < kLabCount) {
         std::fprintf(stderr, "note: rendering stage %d (labs 1 to %d); these labs are not done yet:\n%s", ready, ready,
-                     missing_labs(labs, 6).c_str());
+                     missing_labs(labs, kLabCount).c_str());
     }
     return ready;
 }

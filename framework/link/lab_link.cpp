@@ -1,7 +1,7 @@
 #include "lab_link.hpp"
 
 #include "printable.hpp"
-#include "whitted/lab_status.hpp"
+#include "whitted/lab_table.hpp"
 #include "whitted/not_implemented.hpp"
 
 #include <algorithm>

@@ -53,17 +53,6 @@ std::map<std::string_view, std::function<void()>> lab_probes(const Scene& scene,
     };
 }
 
-std::vector<std::string_view> lab_functions(const LabInfo& lab) {
-    std::vector<std::string_view> names;
-    std::string_view rest = lab.functions;
-    while (!rest.empty()) {
-        const std::size_t space = rest.find(' ');
-        if (space != 0) names.push_back(rest.substr(0, space));
-        rest = space == std::string_view::npos ? std::string_view{} : rest.substr(space + 1);
-    }
-    return names;
-}
-
 std::vector<LabStatus> probe_labs() {
     std::vector<LabStatus> labs;
     for (const LabInfo& row : kLabs) labs.push_back(LabStatus{row.number, std::string(row.stem), std::string(row.title), true, {}});

@@ -11,4 +11,15 @@ std::string stage_list() {
     return list;
 }
 
+std::vector<std::string_view> lab_functions(const LabInfo& lab) {
+    std::vector<std::string_view> names;
+    std::string_view rest = lab.functions;
+    while (!rest.empty()) {
+        const std::size_t space = rest.find(' ');
+        if (space != 0) names.push_back(rest.substr(0, space));
+        rest = space == std::string_view::npos ? std::string_view{} : rest.substr(space + 1);
+    }
+    return names;
+}
+
 } // namespace whitted

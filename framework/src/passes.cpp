@@ -18,23 +18,23 @@ using detail::kShadowBackground;
 using detail::ramp;
 
 const std::array<PassInfo, 9> kPasses = {{
-    {Pass::normal, "normal", stage_number(Stage::ray_casting),
+    {Pass::normal, "normal", Stage::ray_casting,
      "the eye ray's hit normal: red, green, blue = its x, y, z from -1..1 mapped to 0..1; background black"},
-    {Pass::depth, "depth", stage_number(Stage::ray_casting), "the eye ray's distance to its hit: nearest white, farthest dark grey; background black"},
-    {Pass::albedo, "albedo", stage_number(Stage::ray_casting),
+    {Pass::depth, "depth", Stage::ray_casting, "the eye ray's distance to its hit: nearest white, farthest dark grey; background black"},
+    {Pass::albedo, "albedo", Stage::ray_casting,
      "the diffuse colour Kd x C at the eye ray's hit (checkerboards included); background black"},
-    {Pass::shadow, "shadow", stage_number(Stage::shadows),
+    {Pass::shadow, "shadow", Stage::shadows,
      "is_lit() at the eye ray's hit for the lights in front of the surface: white = every one reaches it, "
      "black = none, grey = some; dark blue = no light in front; teal = background"},
-    {Pass::reflectance, "reflectance", stage_number(Stage::reflection),
+    {Pass::reflectance, "reflectance", Stage::reflection,
      "the weight of the eye ray's reflected ray (Ks x specular colour, or Kr with Fresnel); black = none"},
-    {Pass::fresnel, "fresnel", stage_number(Stage::fresnel),
+    {Pass::fresnel, "fresnel", Stage::fresnel,
      "fresnel_reflectance() at the eye ray's hit on transparent surfaces, black 0 to white 1; "
      "dark blue = not transparent; background black"},
-    {Pass::ray_depth, "ray-depth", stage_number(Stage::ray_casting),
+    {Pass::ray_depth, "ray-depth", Stage::ray_casting,
      "the deepest ray of each pixel's ray tree: dark blue = the eye ray only, then green, yellow, red = max depth"},
-    {Pass::object_id, "object-id", stage_number(Stage::ray_casting), "one colour per object (per line of the scene file); background black"},
-    {Pass::cost, "cost", stage_number(Stage::ray_casting),
+    {Pass::object_id, "object-id", Stage::ray_casting, "one colour per object (per line of the scene file); background black"},
+    {Pass::cost, "cost", Stage::ray_casting,
      "intersection tests per pixel (ray-box + ray-primitive, every ray of the pixel's tree), log scale: "
      "dark blue = fewest, red = most in this image"},
 }};

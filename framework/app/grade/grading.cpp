@@ -37,6 +37,24 @@ FileRecord relied_on_files(const GradingSetup& setup, const WorkerKit& kit) {
     return record;
 }
 
+// The HEAD files of the tree's git history, which holds the solution too: .git/HEAD, or for a worktree
+// (.git is a file "gitdir: DIR") DIR/HEAD and the HEAD of the repository it shares (DIR/commondir).
+std::vector<fs::path> git_heads(const fs::path& tree) {
+    const fs::path git = tree / ".git";
+    std::error_code error;
+    if (fs::is_directory(git, error)) return {git / "HEAD"};
+    std::ifstream link(git);
+    std::string line;
+    if (!std::getline(link, line) || line.rfind("gitdir: ", 0) != 0) return {};
+    fs::path gitdir = line.substr(8);
+    if (gitdir.is_relative()) gitdir = tree / gitdir;
+    std::vector<fs::path> heads = {gitdir / "HEAD"};
+    std::ifstream common(gitdir / "commondir");
+    if (std::string shared; std::getline(common, shared))
+        heads.push_back((fs::path(shared).is_relative() ? gitdir / shared : fs::path(shared)) / "HEAD");
+    return heads;
+}
+
 // Files the student's code must not read, one of each kind; the probe of make_sandbox tries them.
 std::vector<fs::path> secrets(const GradingSetup& setup, const WorkerKit& kit) {
     std::vector<fs::path> files = {setup.instructor_tree / "solution" / "01_ray_casting.cpp", setup.instructor_tree / "tests" / "rubric.json",
@@ -47,23 +65,8 @@ std::vector<fs::path> secrets(const GradingSetup& setup, const WorkerKit& kit) {
             break;
         }
     for (const auto& [lab, checker] : kit.checkers) files.push_back(checker);
-    // The tree's git history holds the solution too; a worktree's lives in another repository ("gitdir: ...").
-    const fs::path git = setup.instructor_tree / ".git";
-    std::error_code error;
-    if (fs::is_directory(git, error)) {
-        files.push_back(git / "HEAD");
-    } else if (fs::is_regular_file(git, error)) {
-        std::ifstream link(git);
-        std::string line;
-        if (std::getline(link, line) && line.rfind("gitdir: ", 0) == 0) {
-            fs::path gitdir = line.substr(8);
-            if (gitdir.is_relative()) gitdir = setup.instructor_tree / gitdir;
-            files.push_back(gitdir / "HEAD");
-            std::ifstream common(gitdir / "commondir");
-            if (std::string shared; std::getline(common, shared))
-                files.push_back((fs::path(shared).is_relative() ? gitdir / shared : fs::path(shared)) / "HEAD");
-        }
-    }
+    const std::vector<fs::path> history = git_heads(setup.instructor_tree);
+    files.insert(files.end(), history.begin(), history.end());
     return files;
 }
 
@@ -116,7 +119,7 @@ public:
         return sandbox_;
     }
 
-    /// Compiles the six lab files and links a worker per lab and one for the whole renderer.
+    /// Compiles the lab files and links a worker per lab and one for the whole renderer.
     void build_workers(const std::vector<std::string>& labs) {
         const fs::path build = setup_.work / "build";
         fs::create_directories(build / "labs");

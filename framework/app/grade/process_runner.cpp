@@ -357,7 +357,7 @@ void kill_user_processes(unsigned uid) {
 
 int remove_user_leftovers(unsigned uid) {
     int removed = 0;
-    for (const char* shared : {"/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/var/lock", "/dev/mqueue"}) {
+    for (const char* shared : {"/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/dev/mqueue"}) { // /var/lock: a link to /run/lock
         std::error_code error;
         for (const std::filesystem::directory_entry& entry : std::filesystem::directory_iterator(shared, error)) {
             struct stat info {};

@@ -30,9 +30,6 @@ struct LabStatus {
 /// The status of every lab of the table, in order.
 std::vector<LabStatus> probe_labs();
 
-/// The functions a lab asks for, from its row of the table.
-std::vector<std::string_view> lab_functions(const LabInfo& lab);
-
 /// One call of each lab function on a tiny scene, by function name; `scene` and `tracer` must outlive them.
 std::map<std::string_view, std::function<void()>> lab_probes(const Scene& scene, const Tracer& tracer);
 

@@ -11,6 +11,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace whitted {
 
@@ -48,6 +49,9 @@ constexpr const LabInfo& lab(int number) { return kLabs.at(static_cast<std::size
 
 /// "1 ray casting, 2 shadows, ...": the stages for help texts.
 std::string stage_list();
+
+/// The functions a lab asks for, from its row of the table.
+std::vector<std::string_view> lab_functions(const LabInfo& lab);
 
 namespace detail {
 constexpr bool rows_in_order() {

@@ -24,7 +24,7 @@ enum class Pass { normal, depth, albedo, shadow, reflectance, fresnel, ray_depth
 struct PassInfo {
     Pass pass;
     std::string_view name;    // as written after --pass
-    int min_stage;            // the labs it calls: 1..min_stage must be done
+    Stage min_stage;          // the labs it calls: those up to this stage must be done
     std::string_view legend;  // how to read the picture, one sentence
 };
 
