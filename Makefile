@@ -4,9 +4,9 @@
 #   make handout OUT=dir, make proofs, make references: for instructors
 #   make test-grader  end-to-end check of `whitted grade` (CI, after make test)
 #   make test-report  the grader's report.html opened in headless Chromium (CI)
-#   make bench    time whitted against POV-Ray and Embree (docs/instructors.md, "Benchmark")
-#   make sanitize every test built with AddressSanitizer + UBSan (docs/robustness.md)
-#   make fuzz     fuzz the loaders and the image reader, MINUTES each (docs/robustness.md)
+#   make bench    time whitted against POV-Ray and Embree (instructor/docs/instructors.md, "Benchmark")
+#   make sanitize every test built with AddressSanitizer + UBSan (instructor/docs/robustness.md)
+#   make fuzz     fuzz the loaders and the image reader, MINUTES each (instructor/docs/robustness.md)
 #   make test-hostile  the grader against hostile submissions (CI)
 MAKEFLAGS += --no-print-directory
 BUILD_DIR ?= build
@@ -21,6 +21,11 @@ BENCH_SCENES ?= $(wildcard $(SPD_DIR)/teapot6.nff $(SPD_DIR)/mount6.nff $(SPD_DI
 BENCH_ARGS ?=
 
 MINUTES ?= 10
+
+# The tree's build mode (cmake/WhittedMode.cmake): instructor (solution/ and
+# instructor/ are here) or handout (the student's tree).
+MODE := $(shell sed -n 's/^set(WHITTED_DEFAULT_MODE \([a-z]*\))$$/\1/p' cmake/WhittedMode.cmake)
+INSTRUCTOR := $(filter instructor,$(MODE))
 
 .PHONY: all deps configure build render test bench sanitize fuzz test-grader test-report test-hostile references handout proofs clean
 
@@ -38,28 +43,17 @@ build: configure
 render: build
 	@./$(BUILD_DIR)/whitted render $(SCENE) -o $(OUT) --width $(SIZE) --height $(SIZE)
 
-# The benchmark of issue 4; it also installs POV-Ray and Embree 3 when it can.
-# Configuring again finds Embree when it has just been installed.
-bench: DEPS_ARGS = --bench
-bench: configure
-	@cmake -S . -B $(BUILD_DIR) -DWHITTED_BENCH=ON > /dev/null
-	@grep -q '^CMAKE_BUILD_TYPE:STRING=Release$$' $(BUILD_DIR)/CMakeCache.txt || echo "warning: $(BUILD_DIR) is not a Release build: the times say little"
-	@cmake --build $(BUILD_DIR) -j$(JOBS) --target whitted-bench $(if $(wildcard solution/01_ray_casting.cpp),whitted-as-student)
-	@test -d "$(SPD_DIR)" || echo "note: no SPD scenes in $(SPD_DIR): benching the generated scenes only (make bench SPD_DIR=folder/with/teapot6.nff...)"
-	@./$(BUILD_DIR)/whitted-bench --flake $(BENCH_FLAKES) $(BENCH_SCENES) \
-	  $(if $(wildcard solution/01_ray_casting.cpp),--student-whitted $(BUILD_DIR)/whitted-as-student) $(BENCH_ARGS)
-
 # With the reference solution (the instructor's tree): every test, plainly.
 # Without it (the student handout): every test, then each lab's progress.
 # make test LAB=3: only lab 3's tests (built and run), for a student working on one lab.
 ifneq ($(LAB),)
 test: configure
 	@echo "$(LAB)" | grep -qE '^[0-9]+$$' || { echo "make test LAB=N: N is a lab number (see ./$(BUILD_DIR)/whitted labs)"; exit 2; }
-	@cmake --build $(BUILD_DIR) -j$(JOBS) --target $(if $(wildcard solution/01_ray_casting.cpp),lab$(LAB)_reference,lab$(LAB))
+	@cmake --build $(BUILD_DIR) -j$(JOBS) --target $(if $(INSTRUCTOR),lab$(LAB)_reference,lab$(LAB))
 	@cd $(BUILD_DIR) && ctest -L '^lab$(LAB)$$' --output-on-failure -j$(JOBS)
 else
 test: build
-ifneq ($(wildcard solution/01_ray_casting.cpp),)
+ifneq ($(INSTRUCTOR),)
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
 else
 	@bash scripts/lab-progress.sh $(BUILD_DIR)
@@ -70,41 +64,52 @@ endif
 sanitize: deps
 	@bash scripts/test-sanitizers.sh
 
-ifneq ($(wildcard solution/01_ray_casting.cpp),)
+ifneq ($(INSTRUCTOR),)
+# The benchmark of issue 4; it also installs POV-Ray and Embree 3 when it can.
+# Configuring again finds Embree when it has just been installed.
+bench: DEPS_ARGS = --bench
+bench: configure
+	@cmake -S . -B $(BUILD_DIR) -DWHITTED_BENCH=ON > /dev/null
+	@grep -q '^CMAKE_BUILD_TYPE:STRING=Release$$' $(BUILD_DIR)/CMakeCache.txt || echo "warning: $(BUILD_DIR) is not a Release build: the times say little"
+	@cmake --build $(BUILD_DIR) -j$(JOBS) --target whitted-bench whitted-as-student
+	@test -d "$(SPD_DIR)" || echo "note: no SPD scenes in $(SPD_DIR): benching the generated scenes only (make bench SPD_DIR=folder/with/teapot6.nff...)"
+	@./$(BUILD_DIR)/whitted-bench --flake $(BENCH_FLAKES) $(BENCH_SCENES) \
+	  --student-whitted $(BUILD_DIR)/whitted-as-student $(BENCH_ARGS)
+
 test-grader: build
-	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-grader.sh
+	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash instructor/scripts/test-grader.sh
 
 # The grading report in a real browser; it also installs chromium when it can.
 test-report: DEPS_ARGS = --browser
 test-report: build
-	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-report-browser.sh
+	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash instructor/scripts/test-report-browser.sh
 
 test-hostile: build
-	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash scripts/test-hostile.sh
+	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash instructor/scripts/test-hostile.sh
 
 # libFuzzer on the NFF and P3F loaders and the image reader, MINUTES each (build-fuzz/).
 fuzz: DEPS_ARGS = --fuzz
 fuzz: deps
-	@bash scripts/fuzz.sh --minutes $(MINUTES)
+	@bash instructor/scripts/fuzz.sh --minutes $(MINUTES)
 
 # Instructors: rewrite every reference picture from the reference solution.
 references: build
 	@cd $(BUILD_DIR) && WHITTED_UPDATE_REFERENCES=1 ctest -R '^(lab[0-9]\.(Hidden)?Lab[0-9]Image|integration\.)' -j$(JOBS) --output-on-failure
-	@git status --short -- tests
+	@git status --short -- tests instructor/tests
 
 # Instructors: write the student handout (no solution, hidden tests or mistakes) to OUT.
 handout:
 	@test -n "$(OUT)" || { echo "usage: make handout OUT=folder"; exit 2; }
-	@bash scripts/export-handout.sh "$(OUT)"
+	@bash instructor/scripts/export-handout.sh "$(OUT)"
 
 # Instructors: prove the tests catch every stub and every catalogued mistake.
 proofs:
 	@bash scripts/install-deps.sh --proofs
-	@bash scripts/prove-tests.sh
+	@bash instructor/scripts/prove-tests.sh
 else
 # The student handout has no reference solution: these are the instructor's.
-test-grader test-report test-hostile fuzz references handout proofs:
-	@echo "make $@ is for instructors: it needs the instructor's tree (solution/, tests/hidden/)"; exit 2
+test-grader test-report test-hostile fuzz references handout proofs bench:
+	@echo "make $@ is for instructors: it needs the instructor's tree (solution/ and instructor/)"; exit 2
 endif
 
 clean:

@@ -1,7 +1,7 @@
 # The labs, and how the build mixes implementations of them.
 #
 # Every lab is one file with the same name in solution/ (the reference) and in
-# labs/ (the student's); tests/mistakes/<lab>/ holds patches of the reference
+# labs/ (the student's); instructor/tests/mistakes/<lab>/ holds patches of the reference
 # (catalogued mistakes).
 # Each file becomes an object library, so an executable can take lab k from one
 # implementation and every other lab from another: that is how one lab is
@@ -95,4 +95,21 @@ function(whitted_lab_number out lab)
   string(SUBSTRING ${lab} 0 2 number)
   math(EXPR number "${number}")
   set(${out} ${number} PARENT_SCOPE)
+endfunction()
+
+# whitted_renderer(TARGET LABS <lab objects> [KERNELS <object>] [COMMANDS <object>]):
+# the `whitted` program with one implementation of the labs. Without KERNELS it
+# links no fast leaf kernels (every intersection goes through the labs' code);
+# without COMMANDS, no instructor commands (no `whitted grade`).
+function(whitted_renderer target)
+  cmake_parse_arguments(A "" "KERNELS;COMMANDS" "LABS" ${ARGN})
+  if(NOT A_KERNELS)
+    set(A_KERNELS whitted_no_leaf_kernels)
+  endif()
+  if(NOT A_COMMANDS)
+    set(A_COMMANDS whitted_no_instructor_commands)
+  endif()
+  add_executable(${target} $<TARGET_OBJECTS:whitted_app>)
+  target_link_libraries(${target} PRIVATE ${A_LABS} ${A_KERNELS} ${A_COMMANDS} whitted_trace whitted_framework
+                                          whitted_generators CLI11::CLI11)
 endfunction()

@@ -1,15 +1,15 @@
-# Sanitizer and fuzzing builds (docs/robustness.md).
+# Sanitizer and fuzzing builds (instructor/docs/robustness.md).
 #
 # WHITTED_SANITIZE builds every target with AddressSanitizer and
 # UndefinedBehaviorSanitizer; any report stops the program with an error, so a
 # test that triggers one fails. WHITTED_FUZZ (clang only) adds libFuzzer's
-# coverage instrumentation and builds the fuzz_<name> programs of tests/fuzz.
+# coverage instrumentation and builds the fuzz_<name> programs of instructor/tests/fuzz.
 option(WHITTED_SANITIZE "Build everything with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
-option(WHITTED_FUZZ "Also build the libFuzzer programs of tests/fuzz (clang; implies WHITTED_SANITIZE)" OFF)
+option(WHITTED_FUZZ "Also build the libFuzzer programs of instructor/tests/fuzz (clang; implies WHITTED_SANITIZE)" OFF)
 
 if(WHITTED_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
-    message(FATAL_ERROR "WHITTED_FUZZ needs clang: configure with -DCMAKE_CXX_COMPILER=clang++ (scripts/fuzz.sh does)")
+    message(FATAL_ERROR "WHITTED_FUZZ needs clang: configure with -DCMAKE_CXX_COMPILER=clang++ (instructor/scripts/fuzz.sh does)")
   endif()
   set(WHITTED_SANITIZE ON)
   add_compile_options(-fsanitize=fuzzer-no-link)

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <vector>
 
 namespace whitted {
 
@@ -28,7 +29,7 @@ Command add_generate_command(CLI::App& app);
 /// `whitted labs [--tsv]`
 Command add_labs_command(CLI::App& app);
 
-/// `whitted grade SUBMISSION ...` (instructors)
-Command add_grade_command(CLI::App& app);
+/// The instructor build's extra commands (`whitted grade`); none in the student's.
+std::vector<Command> add_instructor_commands(CLI::App& app);
 
 } // namespace whitted

@@ -6,7 +6,7 @@
 // than a few steps, and also bounds the mean error. PSNR and the worst pixel
 // are reported to help, never used to decide.
 //
-// Calibration (scripts/calibrate-gate.sh): the reference was compared with
+// Calibration (instructor/scripts/calibrate-gate.sh): the reference was compared with
 // correct variants of itself on every lab scene, hidden scene and the classic
 // scene. -O0 and clang builds match bit for bit; a secondary-ray offset 100
 // times larger or smaller stays below 0.1 % failing pixels; an implementation

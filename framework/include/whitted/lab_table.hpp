@@ -4,7 +4,7 @@
 // `whitted render --stage`, which labs are done, the tracer's recursion, the
 // grader, the handout's scripts). They all take the labs from the rows below,
 // so adding a lab is a row here plus its own files (labs/, solution/, tests/,
-// docs/labs/, its section of tests/rubric.json). CMake reads the rows too
+// docs/labs/, its section of instructor/rubric.json). CMake reads the rows too
 // (cmake/WhittedLabs.cmake), so keep each row on one line, in this form.
 #pragma once
 

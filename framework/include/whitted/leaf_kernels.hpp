@@ -5,7 +5,7 @@
 // "something is there". The reference renderer plugs in queries that walk the
 // BVH with distance-only tests inlined, with the very same arithmetic as the
 // reference labs; the scene then builds one `Hit` for the nearest primitive
-// alone: the same image, bit for bit (tests/solution checks it), for less work.
+// alone: the same image, bit for bit (instructor/tests/solution checks it), for less work.
 // A student build has none, so every ray goes through the student's own code.
 #pragma once
 

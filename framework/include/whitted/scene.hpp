@@ -43,7 +43,7 @@ struct QueryCost {
 class Scene;
 
 /// Scene queries answered by another process: a grading checker or worker
-/// whose lab 1 lives on the other side of the link (framework/link/). Only
+/// whose lab 1 lives on the other side of the link (instructor/link/). Only
 /// those programs link a definition of `remote_scene_queries()` other than
 /// the framework's, which returns nullptr.
 struct RemoteSceneQueries {

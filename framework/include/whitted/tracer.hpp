@@ -46,7 +46,7 @@ struct RenderSettings {
 };
 
 /// What a tracer carries from ray to ray within one pixel: handed across the
-/// grading link (framework/link/) so that a lab function run in another process
+/// grading link (instructor/link/) so that a lab function run in another process
 /// continues exactly where this one stands.
 struct TracerState {
     RayStats stats;

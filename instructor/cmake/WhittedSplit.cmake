@@ -1,0 +1,149 @@
+# The programs of the grading split (instructor/link/lab_link.hpp).
+#
+# check_<lab>: the lab's tests (public and hidden), the reference for every
+#   other lab, and remote_<lab>: the graded lab is answered by a worker.
+# check_integration: the whole-renderer tests, every lab answered by a worker.
+# A worker: one implementation of the graded lab (or of all six), remote_<lab>
+#   for the others, and the worker's main. It holds no reference code.
+
+# The bits 1..N of a set of lab names (lab k is bit k).
+function(whitted_lab_bits out)
+  set(bits 0)
+  foreach(lab IN LISTS ARGN)
+    whitted_lab_number(number ${lab})
+    math(EXPR bits "${bits} | (1 << ${number})")
+  endforeach()
+  set(${out} ${bits} PARENT_SCOPE)
+endfunction()
+
+# whitted_checker(TARGET TESTS_OBJECTS LABS_ANSWERED_BY_THE_WORKER...)
+function(whitted_checker target tests)
+  whitted_lab_bits(bits ${ARGN})
+  add_executable(${target} $<TARGET_OBJECTS:${tests}> ${PROJECT_SOURCE_DIR}/instructor/link/checker_main.cpp)
+  target_compile_definitions(${target} PRIVATE WHITTED_REMOTE_LABS=${bits})
+  set(labs)
+  foreach(lab IN LISTS WHITTED_LABS)
+    if(lab IN_LIST ARGN)
+      list(APPEND labs remote_${lab})
+    else()
+      list(APPEND labs reference_${lab})
+    endif()
+  endforeach()
+  target_link_libraries(${target} PRIVATE ${labs} whitted_link test_support)
+endfunction()
+
+# whitted_worker(TARGET SET LABS_IT_ANSWERS...): labs from SET_<lab>, the rest remote.
+function(whitted_worker target set)
+  set(labs)
+  foreach(lab IN LISTS WHITTED_LABS)
+    if(lab IN_LIST ARGN)
+      list(APPEND labs ${set}_${lab})
+    else()
+      list(APPEND labs remote_${lab})
+    endif()
+  endforeach()
+  add_executable(${target} $<TARGET_OBJECTS:whitted_worker_main>)
+  target_link_libraries(${target} PRIVATE ${labs} whitted_link)
+endfunction()
+
+# The link's tests run one at a time (RUN_SERIAL): a checker and its worker
+# each want a core, and two pairs on two cores slow each other about twice.
+function(whitted_split_programs)
+  foreach(lab IN LISTS WHITTED_LABS)
+    whitted_lab_number(number ${lab})
+    whitted_checker(check_${lab} labtests_${lab} ${lab})
+    whitted_worker(worker_${lab}_reference reference ${lab})
+    whitted_worker(worker_${lab}_stub student ${lab})
+    add_test(NAME split.lab${number}.reference COMMAND check_${lab} --worker=$<TARGET_FILE:worker_${lab}_reference> --gtest_brief=1)
+    set_tests_properties(split.lab${number}.reference PROPERTIES LABELS "split;lab${number}" TIMEOUT 600 RUN_SERIAL TRUE)
+    # Every test fails with the untouched stub: none passes.
+    add_test(NAME split.lab${number}.stub COMMAND check_${lab} --worker=$<TARGET_FILE:worker_${lab}_stub>)
+    set_tests_properties(split.lab${number}.stub PROPERTIES LABELS "split;stub" TIMEOUT 600 RUN_SERIAL TRUE
+                         PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 0 tests\\.")
+  endforeach()
+  # Workers that attack the link: each must leave the reflection tests failed
+  # and the checker saying the link broke (instructor/tests/link/).
+  add_executable(raw_hostile_worker ${PROJECT_SOURCE_DIR}/instructor/tests/link/raw_hostile_worker.cpp)
+  target_link_libraries(raw_hostile_worker PRIVATE whitted_link)
+  whitted_lab_object(hostile_04_reflection ${PROJECT_SOURCE_DIR}/instructor/tests/link/hostile_reflection.cpp)
+  whitted_worker(hostile_reflection_worker hostile 04_reflection)
+  set(attacks raw:garbage raw:oversized raw:short_reply raw:long_reply raw:goodbye raw:scene_from_worker
+              raw:exit0 raw:abort raw:forged_positions lab:later_lab lab:forged_hit lab:own_tracer)
+  foreach(attack IN LISTS attacks)
+    string(REPLACE ":" ";" parts ${attack})
+    list(GET parts 0 kind)
+    list(GET parts 1 mode)
+    if(kind STREQUAL "raw")
+      set(worker raw_hostile_worker)
+    else()
+      set(worker hostile_reflection_worker)
+    endif()
+    set(expected "\\[  PASSED  \\] 0 tests\\.")
+    if(NOT mode STREQUAL "own_tracer")
+      string(APPEND expected "[^\n]*\n(.|\n)*grading (link broken|worker killed|worker exited)")
+    endif()
+    add_test(NAME split.hostile.${mode}
+             COMMAND check_04_reflection --worker=$<TARGET_FILE:${worker}> --gtest_filter=Reflection.*:HiddenReflection.*)
+    set_tests_properties(split.hostile.${mode} PROPERTIES LABELS "split;hostile" TIMEOUT 600 RUN_SERIAL TRUE
+      ENVIRONMENT WHITTED_HOSTILE=${mode} PASS_REGULAR_EXPRESSION "${expected}")
+  endforeach()
+
+  whitted_checker(check_integration labtests_integration ${WHITTED_LABS})
+  whitted_worker(worker_integration_reference reference ${WHITTED_LABS})
+  add_test(NAME split.integration.reference COMMAND check_integration --worker=$<TARGET_FILE:worker_integration_reference> --gtest_brief=1)
+  set_tests_properties(split.integration.reference PROPERTIES LABELS "split;integration" TIMEOUT 600 RUN_SERIAL TRUE)
+endfunction()
+
+# The grading kit: what `whitted grade` needs to build a worker from a student's
+# lab file without this tree. grading-kit.txt names, one item a line, the
+# compiler and its arguments for a lab file (those of the labs here), the
+# framework's public headers, the libraries and objects a worker links, and the
+# checker of every lab. The grader copies the files it names to a folder of its
+# own, so that the worker never sees this build. Target grading_parts builds
+# them all (the grader brings it up to date before each grading).
+function(whitted_grading_kit)
+  string(TOUPPER "${CMAKE_BUILD_TYPE}" type)
+  separate_arguments(flags UNIX_COMMAND "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${type}} ${CMAKE_CXX20_STANDARD_COMPILE_OPTION}")
+  separate_arguments(link_flags UNIX_COMMAND "${CMAKE_EXE_LINKER_FLAGS} ${CMAKE_EXE_LINKER_FLAGS_${type}}")
+  set(lab student_01_ray_casting)
+  set(text "# whitted grade's kit for building workers (instructor/cmake/WhittedSplit.cmake); one item a line\n")
+  string(APPEND text "build-type ${CMAKE_BUILD_TYPE}\n")
+  string(APPEND text "compiler ${CMAKE_CXX_COMPILER}\n")
+  foreach(flag IN LISTS flags)
+    string(APPEND text "compile ${flag}\n")
+  endforeach()
+  string(APPEND text "compile $<JOIN:$<TARGET_PROPERTY:${lab},COMPILE_OPTIONS>,\ncompile >\n")
+  string(APPEND text "define $<JOIN:$<TARGET_PROPERTY:${lab},COMPILE_DEFINITIONS>,\ndefine >\n")
+  foreach(flag IN LISTS link_flags)
+    string(APPEND text "link ${flag}\n")
+  endforeach()
+  string(APPEND text "link $<JOIN:$<TARGET_PROPERTY:worker_01_ray_casting_stub,LINK_OPTIONS>,\nlink >\n")
+  string(APPEND text "link -pthread\n")
+  string(APPEND text "headers ${PROJECT_SOURCE_DIR}/framework/include/whitted\n")
+  # whitted/labs.hpp precompiled with the same compiler and arguments: a lab
+  # file that includes it first compiles in a quarter of the time.
+  set(pch_dir ${PROJECT_BINARY_DIR}/grading-kit-pch)
+  set(pch ${pch_dir}/labs.hpp.gch)
+  file(GLOB headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/framework/include/whitted/*.hpp)
+  file(WRITE ${pch_dir}/labs_pch.hpp "#include \"whitted/labs.hpp\"\n")
+  add_custom_command(OUTPUT ${pch}
+    COMMAND ${CMAKE_CXX_COMPILER} ${flags} $<TARGET_PROPERTY:${lab},COMPILE_OPTIONS>
+            "$<$<BOOL:$<TARGET_PROPERTY:${lab},COMPILE_DEFINITIONS>>:-D$<JOIN:$<TARGET_PROPERTY:${lab},COMPILE_DEFINITIONS>,;-D>>"
+            -I ${PROJECT_SOURCE_DIR}/framework/include -x c++-header ${pch_dir}/labs_pch.hpp -o ${pch}
+    DEPENDS ${headers} COMMENT "Precompiling whitted/labs.hpp for the grading kit" COMMAND_EXPAND_LISTS VERBATIM)
+  add_custom_target(grading_kit_pch DEPENDS ${pch})
+  string(APPEND text "precompiled ${pch}\n")
+  string(APPEND text "main $<TARGET_OBJECTS:whitted_worker_main>\n")
+  set(parts whitted_worker_main whitted_link whitted_framework)
+  foreach(lab IN LISTS WHITTED_LABS)
+    string(APPEND text "remote ${lab} $<TARGET_OBJECTS:remote_${lab}>\n")
+    string(APPEND text "checker ${lab} $<TARGET_FILE:check_${lab}>\n")
+    list(APPEND parts remote_${lab} check_${lab})
+  endforeach()
+  string(APPEND text "checker integration $<TARGET_FILE:check_integration>\n")
+  # Libraries last, in link order.
+  string(APPEND text "library $<TARGET_FILE:whitted_link>\nlibrary $<TARGET_FILE:whitted_framework>\n")
+  file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/grading-kit.txt CONTENT "${text}")
+  add_custom_target(grading_parts)
+  add_dependencies(grading_parts ${parts} check_integration grading_kit_pch)
+endfunction()

@@ -1,0 +1,207 @@
+// `whitted grade SUBMISSION`: build a student's labs into workers, run every
+// test as the instructor's checker talking to the student's worker, and grade
+// them with the rubric; writes results.json (Gradescope) and report.html. Exit codes: 0 full marks, 1 points lost, 2 usage error,
+// 3 grader failure (the instructor tree does not build, the rubric is wrong).
+#include "commands.hpp"
+#include "grader/builder.hpp"
+#include "grader/grading.hpp"
+#include "grader/html_report.hpp"
+#include "grader/results_json.hpp"
+#include "grader/submission.hpp"
+#include "grader/text.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <stdlib.h>
+
+namespace whitted {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace grade;
+
+struct GradeOptions {
+    std::string submission;
+    std::string out = "grading";
+    std::string instructor_tree = WHITTED_INSTRUCTOR_TREE;
+    std::string instructor_build = WHITTED_INSTRUCTOR_BUILD;
+    bool allow_exposed_answers = false;
+    std::string rubric;
+    int jobs = 2;
+    double timeout = 20.0;
+    double budget = 1800.0;
+    int memory_mb = 2048;
+    long max_processes = 0;
+    std::string sandbox = "auto";
+    bool quiet = false;
+};
+
+const char* kMarker = ".whitted-grade"; // marks a folder the grader may empty again
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+bool inside(const fs::path& path, const fs::path& folder) {
+    const auto [end, ignored] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
+    return end == folder.end();
+}
+
+// A folder the grader writes must be new, empty or written by it before
+// (it has `mark`), and hold nothing the grader reads.
+void check_folder(const fs::path& folder, const char* mark, const std::string& option, const std::vector<fs::path>& precious) {
+    for (const fs::path& path : precious)
+        if (inside(path, folder)) throw UsageError(folder.string() + " holds " + path.string() + "; choose another " + option);
+    if (fs::exists(folder) && (!fs::is_directory(folder) || (!fs::is_empty(folder) && !fs::exists(folder / mark))))
+        throw UsageError(folder.string() + " exists and is not the grader's; choose a new or empty " + option);
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+    std::ofstream stream(file, std::ios::binary);
+    stream << text;
+    if (!stream.flush()) throw GraderFailure("cannot write " + file.string());
+}
+
+// A new folder of the grader's for the kit and the workers: private to others
+// but enterable (0711), so that the student's code, as another user, reaches
+// only the paths it is given.
+fs::path make_work_folder() {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = (tmp && *tmp ? std::string(tmp) : std::string("/tmp")) + "/whitted-grade-XXXXXX";
+    if (!mkdtemp(pattern.data())) throw GraderFailure("cannot make a folder in " + fs::path(pattern).parent_path().string());
+    fs::permissions(pattern, fs::perms(0711));
+    return pattern;
+}
+
+void print_table(const GradingResult& result, const fs::path& out) {
+    std::printf("%-15s %7s / %-7s %s\n", "lab", "points", "max", "tests");
+    for (const LabResult& lab : result.labs) std::printf("%s\n", lab_summary_line(lab, Audience::instructor).c_str());
+    std::printf("%-15s %7s / %-7s\n", "total", format_points(result.score_cents).c_str(), format_points(result.max_cents).c_str());
+    for (const LabResult& lab : result.labs)
+        for (const std::string& note : lab.notes) std::printf("note: %s: %s\n", lab.lab.c_str(), note.c_str());
+    std::printf("wrote %s and %s\n", (out / "results.json").c_str(), (out / "report.html").c_str());
+}
+
+int run_grade(const GradeOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    GradingSetup setup;
+    setup.instructor_tree = fs::weakly_canonical(fs::absolute(options.instructor_tree));
+    if (!fs::is_regular_file(setup.instructor_tree / "CMakeLists.txt") || !fs::is_directory(setup.instructor_tree / "solution") ||
+        !fs::is_regular_file(setup.instructor_tree / "instructor" / "rubric.json"))
+        throw UsageError(setup.instructor_tree.string() + " is not an instructor tree (no CMakeLists.txt, solution/ or instructor/rubric.json)");
+    const std::vector<std::string> labs = lab_names();
+    const fs::path submission = fs::weakly_canonical(fs::absolute(options.submission));
+    setup.submission_labs = find_lab_folder(submission, labs);
+    setup.out = fs::weakly_canonical(fs::absolute(options.out));
+    setup.instructor_build = fs::weakly_canonical(fs::absolute(options.instructor_build));
+    check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs, setup.instructor_tree, setup.instructor_build});
+    fs::create_directories(setup.out);
+    // The grader's user alone: the copied labs and the report of an earlier grading (of the solution, say) are answers.
+    fs::permissions(setup.out, fs::perms::owner_all);
+    write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/ and tests/ here\n");
+    fs::remove_all(setup.out / "build"); // left by graders before the checker/worker split
+    // An earlier grading's results must never pass for this one's, whatever happens below.
+    fs::remove(setup.out / "results.json");
+    fs::remove(setup.out / "report.html");
+    setup.allow_exposed_answers = options.allow_exposed_answers;
+    setup.test_limits.wall_seconds = options.timeout;
+    setup.test_limits.cpu_seconds = 2 * options.timeout; // the image tests render with two threads
+    setup.test_limits.address_space = static_cast<std::size_t>(options.memory_mb) << 20;
+    setup.test_limits.file_size = 64 << 20;
+    setup.max_processes = options.max_processes;
+    setup.budget_seconds = options.budget;
+    setup.sandbox = options.sandbox == "bubblewrap" ? SandboxChoice::bubblewrap
+                    : options.sandbox == "none"     ? SandboxChoice::none
+                                                    : SandboxChoice::automatic;
+    // Orphans of a test (a process that left its group) come back to us, to be killed.
+    become_subreaper();
+    setup.jobs = options.jobs;
+    // Each line with the seconds since the start: where a grading spends its time.
+    if (!options.quiet)
+        setup.progress = [start](const std::string& line) {
+            std::fprintf(stderr, "grade: %5.1f s  %s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                         line.c_str());
+        };
+
+    GradingResult result;
+    std::string problem;
+    int code = 0;
+    try {
+        std::vector<std::string> known = labs;
+        known.push_back("integration");
+        setup.rubric = load_rubric(options.rubric.empty() ? setup.instructor_tree / "instructor" / "rubric.json" : fs::path(options.rubric), known);
+        setup.work = make_work_folder();
+        result = grade_submission(setup);
+        code = result.max_cents > 0 && result.score_cents == result.max_cents ? 0 : 1;
+    } catch (const std::exception& error) { // RubricError, GraderFailure, file system errors
+        problem = replace_paths(error.what(), shown_paths(setup));
+        code = 3;
+    }
+    if (!setup.work.empty()) {
+        std::error_code ignored;
+        fs::remove_all(setup.work, ignored);
+    }
+    write_file(setup.out / "results.json", results_json(result, problem));
+    write_file(setup.out / "report.html", html_report(result, problem));
+    if (!problem.empty()) std::fprintf(stderr, "whitted grade: grader failure: %s\n", problem.c_str());
+    print_table(result, setup.out);
+    // For the instructor only: results.json and report.html are the student's to see.
+    if (!result.fences.empty()) std::printf("student code ran in %s\n", result.fences.c_str());
+    if (!options.quiet)
+        std::fprintf(stderr, "grade: done in %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return code;
+}
+
+/// `whitted grade SUBMISSION ...`
+Command add_grade_command(CLI::App& app) {
+    auto options = std::make_shared<GradeOptions>();
+    CLI::App* command = app.add_subcommand("grade", "Grade a student's labs against the instructor tree (instructors).");
+    command->footer("Exit code: 0 full marks, 1 points lost, 2 usage error, 3 grader failure.");
+    command->add_option("submission", options->submission, "A student tree, its labs/ folder, or a folder with the NN_*.cpp lab files")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    command->add_option("--out", options->out, "Folder for results.json, report.html, the copied labs and each test's files (default ./grading)");
+    command->add_option("--instructor-tree", options->instructor_tree, "The tree with solution/ and the tests (default: the one whitted was built from)")
+        ->check(CLI::ExistingDirectory);
+    command->add_option("--instructor-build", options->instructor_build,
+                        "The Release build of the instructor tree whose checkers and grading kit are used, brought up to date "
+                        "first (default: the one whitted was built in)")
+        ->check(CLI::ExistingDirectory);
+    command->add_option("--rubric", options->rubric, "Rubric file (default: <instructor tree>/instructor/rubric.json)")->check(CLI::ExistingFile);
+    command->add_option("-j,--jobs", options->jobs, "Lab files compiled at once (default 2)")->check(CLI::Range(1, 64));
+    command->add_option("--timeout", options->timeout, "Wall-clock seconds per test; CPU time may be twice that (default 20)")
+        ->check(CLI::Range(0.5, 3600.0));
+    command->add_option("--budget", options->budget,
+                        "Wall-clock seconds for the whole grading: tests not started by then count as timed out, and "
+                        "results.json is still written (default 1800)")
+        ->check(CLI::Range(10.0, 86400.0));
+    command->add_option("--memory", options->memory_mb, "Address space of the student's code per test in MiB (default 2048)")->check(CLI::Range(64, 1 << 20));
+    command->add_option("--max-processes", options->max_processes,
+                        "RLIMIT_NPROC per test: the processes and threads of the tests' user in all (default: what it runs now "
+                        "plus 256; a grader running as root runs them as a user id of its own)")
+        ->check(CLI::Range(0L, 1L << 20));
+    command->add_option("--sandbox", options->sandbox,
+                        "auto: bubblewrap when it works, else other users and permissions (refused where they leave the answers readable); bubblewrap: fail without it; none: never")
+        ->check(CLI::IsMember({"auto", "bubblewrap", "none"}));
+    command->add_flag("--allow-exposed-answers", options->allow_exposed_answers,
+                      "Grade even where the student's code could read the answers (no bubblewrap, and not root or the "
+                      "instructor files readable to other users); the grades can then be forged");
+    command->add_flag("-q,--quiet", options->quiet, "Print only the table");
+    return Command{command, [options] {
+                       try {
+                           return run_grade(*options);
+                       } catch (const UsageError& error) {
+                           std::fprintf(stderr, "whitted grade: %s\n", error.what());
+                           return 2;
+                       }
+                   }};
+}
+
+} // namespace
+
+std::vector<Command> add_instructor_commands(CLI::App& app) { return {add_grade_command(app)}; }
+
+} // namespace whitted

@@ -1,0 +1,92 @@
+#include "grader/results_json.hpp"
+#include "grader/outcome.hpp"
+#include "grader/text.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <map>
+
+namespace whitted::grade {
+namespace {
+
+using nlohmann::ordered_json;
+
+// Points as a JSON number made from whole hundredths (so 1/3 of a point never appears).
+double points(long cents) { return static_cast<double>(cents) / 100.0; }
+
+std::string test_output(const ScoredTest& test) {
+    const TestOutcome& o = test.outcome;
+    if (is_hidden(o.name))
+        return std::string(status_label(student_status(o))) +
+               (o.status == Status::passed ? "\n" : "\nThe details of hidden tests are not shown.\n");
+    std::string text = std::string(status_label(o.status));
+    if (!o.message.empty()) text += ": " + o.message;
+    text += "\n";
+    if (o.image) text += image_summary(*o.image) + "\n";
+    if (o.status == Status::failed && o.image && test.score_cents > 0 && test.score_cents < test.max_cents)
+        text += "partial credit for the image: " + format_points(test.score_cents) + " of " + format_points(test.max_cents) + "\n";
+    if (!o.output.empty() && o.status != Status::passed) text += "\n" + o.output;
+    return text;
+}
+
+} // namespace
+
+std::string status_counts(const LabResult& lab, Audience audience) {
+    std::map<Status, int> counts;
+    for (const ScoredTest& test : lab.tests)
+        ++counts[audience == Audience::student ? student_status(test.outcome) : test.outcome.status];
+    std::string text = std::to_string(counts[Status::passed]) + "/" + std::to_string(lab.tests.size()) + " passed";
+    std::string others;
+    for (Status status : all_statuses())
+        if (status != Status::passed && counts[status])
+            others += (others.empty() ? "" : ", ") + std::to_string(counts[status]) + " " + std::string(status_label(status));
+    return others.empty() ? text : text + " (" + others + ")";
+}
+
+std::string lab_summary_line(const LabResult& lab, Audience audience) {
+    char line[512];
+    std::snprintf(line, sizeof line, "%-15s %7s / %-7s %s", lab.lab.c_str(), format_points(lab.score_cents).c_str(),
+                  format_points(lab.max_cents).c_str(), status_counts(lab, audience).c_str());
+    return line;
+}
+
+std::string results_json(const GradingResult& result, const std::string& problem) {
+    ordered_json root;
+    root["score"] = points(problem.empty() ? result.score_cents : 0);
+    std::string output;
+    if (!problem.empty()) output = "The grader failed; this is not your fault. Please tell your instructor.\n" + problem + "\n";
+    for (const LabResult& lab : result.labs) output += lab_summary_line(lab, Audience::student) + "\n";
+    if (problem.empty()) output += "total: " + format_points(result.score_cents) + " / " + format_points(result.max_cents) + "\n";
+    root["output"] = output;
+    root["output_format"] = "text";
+    root["visibility"] = "visible";
+    root["stdout_visibility"] = "hidden";
+    root["tests"] = ordered_json::array();
+    int lab_number = 0;
+    for (const LabResult& lab : result.labs) {
+        ++lab_number;
+        int test_number = 0;
+        for (const ScoredTest& test : lab.tests) {
+            const TestOutcome& o = test.outcome;
+            ordered_json entry;
+            entry["name"] = lab.title + ": " + o.name;
+            entry["number"] = std::to_string(lab_number) + "." + std::to_string(++test_number);
+            entry["score"] = points(test.score_cents);
+            entry["max_score"] = points(test.max_cents);
+            entry["status"] = o.status == Status::passed ? "passed" : "failed";
+            entry["output"] = test_output(test);
+            entry["output_format"] = "text";
+            const std::string shown = std::string(status_name(student_status(o)));
+            entry["tags"] = {lab.lab, test.rule.empty() ? "unscored" : test.rule, shown};
+            entry["visibility"] = is_hidden(o.name) ? "hidden" : "visible";
+            entry["extra_data"] = {{"lab", lab.lab}, {"status", shown}, {"image", test.image_test}};
+            if (!lab.compile_errors.empty() && o.status == Status::compile_error) entry["output"] = test_output(test) + "\n" + lab.compile_errors;
+            root["tests"].push_back(entry);
+        }
+    }
+    // What the student's code printed and the compiler said may hold any bytes: invalid UTF-8 becomes U+FFFD.
+    return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+} // namespace whitted::grade

@@ -1,0 +1,184 @@
+// The link between a grading checker and a grading worker: lab functions
+// called in one process and run in the other.
+//
+// Why: the tests, the reference labs and the expected values must live where
+// the student's code is not (instructor/docs/grading.md, "Where the verdict lives"). So a
+// checker program (the GoogleTest tests, the reference for every lab but the
+// one graded, and for that lab `remote_NN.cpp`) calls the graded lab's
+// functions over this link, and a worker program (the framework, the student's
+// lab file, and `remote_NN.cpp` for every other lab) runs them. Lab code calls
+// back into the other labs and the framework exactly as in one process: a call
+// may nest calls in the other direction to any depth. Only values cross:
+// scenes travel once, by their serial number; a Tracer crosses as a handle to
+// the checker's tracer plus its state (ray counts, path weight, budget),
+// synchronised both ways on every crossing.
+//
+// The checker owns every scene and tracer and answers the worker only with
+// what lab k's code may use: functions of earlier labs, and those of later
+// labs only through a tracer whose stage includes them. Everything the worker
+// sends is checked (sizes, counts, indices) before the checker uses it; a
+// worker that breaks the protocol breaks the link, and the checker fails the
+// test (exit code 3), however the test handles exceptions.
+#pragma once
+
+#include "whitted/lab_table.hpp"
+#include "wire.hpp"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace whitted::link {
+
+/// Every function that can cross the link, with the lab it belongs to.
+enum class Op : std::uint16_t {
+    primary_ray = 1, intersect_sphere, intersect_plane, intersect_triangle, closest_hit,
+    scene_closest_hit, scene_occluded, // Scene's two queries, made of lab 1's code
+    spawn_ray, is_lit, lambert,
+    blinn_phong,
+    mirror_direction, reflection,
+    refracted_direction, refraction,
+    fresnel_reflectance, fresnel_blend,
+};
+constexpr int kLastOp = static_cast<int>(Op::fresnel_blend);
+
+/// The lab (1..kLabCount, from the lab table) whose code answers `op`; 0 for none.
+int lab_of(Op op);
+/// "blinn_phong()" for Op::blinn_phong, for messages.
+std::string name_of(Op op);
+
+enum class Role {
+    checker, // owns scenes and tracers; answers only what the policy allows
+    worker,  // runs the student's code on what the checker sends
+};
+
+/// A set of labs as bits 1..kLabCount.
+using LabSet = std::uint32_t;
+static_assert(kLabCount < 32, "LabSet holds the labs as bits of 32");
+constexpr LabSet lab_bit(int lab) { return LabSet{1} << lab; }
+
+/// The lab code of the other side threw: rethrown here as what it was.
+struct RemoteError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+/// An exception of the other side that was not a std::exception.
+struct RemoteUnknownException {};
+
+/// A tracer made in the worker for an incoming call, standing for the checker's.
+struct LocalTracer {
+    RayStats stats;
+    RenderSettings settings;
+    std::unique_ptr<Tracer> tracer;
+};
+
+class Link {
+  public:
+    /// A link over one side of a channel. `remote_labs`: the labs whose code is on the other side.
+    Link(Role role, const ChannelFds& fds, LabSet remote_labs);
+    Link(const Link&) = delete;
+    Link& operator=(const Link&) = delete;
+
+    /// The link of this process, set by the checker's or the worker's main.
+    static Link& current();
+    static void set_current(Link* link);
+
+    Role role() const { return role_; }
+    /// Why the link broke, or empty while it works.
+    const std::string& broken() const { return broken_; }
+
+    /// Serves calls until the other side says goodbye or closes the link (the worker's main loop).
+    void serve_until_closed();
+    /// Tells the other side that no more calls come.
+    void say_goodbye();
+
+    class Call;
+
+    // ---- for the serving side (serve_ops.cpp) ----
+    /// The tracer an incoming call of `op` refers to; a worker makes a local
+    /// one, kept until the call ends. Throws LinkError for a handle that is not
+    /// active, and in the checker for a call its policy does not answer.
+    const Tracer& incoming_tracer(Reader& in, Op op);
+    /// The scene an incoming scene query refers to.
+    const Scene& incoming_scene(Reader& in);
+    /// Checks a hit received for `scene` (its indices) before anything uses it.
+    void check_hit(const Hit& hit, const Scene& scene);
+
+  private:
+    friend class Call;
+    struct ActiveTracer {
+        std::uint64_t handle;
+        const Tracer* tracer;
+    };
+
+    void send_scene(const Scene& scene);
+    std::uint64_t serial_of(const Scene& scene);
+    Frame wait_for_reply();
+    void serve(const Frame& call);
+    void fail(const std::string& reason);
+    bool allowed(Op op, const Tracer* tracer) const;
+
+    Role role_;
+    Channel channel_;
+    FrameReader in_;
+    LabSet remote_labs_;
+    std::recursive_mutex mutex_;
+    std::string broken_;
+    int depth_ = 0;
+    std::uint64_t next_handle_ = 1;
+    std::vector<ActiveTracer> active_; // tracers of the calls in progress, innermost last
+    // Checker: serials of scenes the worker holds, oldest first. Worker: the scenes it holds.
+    std::vector<std::uint64_t> sent_scenes_;
+    std::map<std::uint64_t, std::unique_ptr<Scene>> scenes_;
+    std::vector<const Scene*> active_scenes_; // scenes of the calls in progress (checker)
+    std::vector<std::unique_ptr<LocalTracer>> local_tracers_; // worker: tracers of the calls it serves
+};
+
+/// One outgoing call: encode the arguments, send, serve what comes back until
+/// the reply, decode the result.
+class Link::Call {
+  public:
+    Call(Link& link, Op op);
+    ~Call();
+    Call(const Call&) = delete;
+    Call& operator=(const Call&) = delete;
+
+    Writer& args() { return args_; }
+    /// Encodes a tracer argument; its state comes back with the reply.
+    void tracer(const Tracer& tracer);
+    /// Encodes a scene argument (sending the scene first if the other side lacks it).
+    void scene(const Scene& scene);
+    /// Encodes primitives, for closest_hit().
+    void primitives(std::span<const Primitive> primitives);
+    /// Sends the call and waits; returns the reply, positioned at the result.
+    /// Rethrows what the other side's lab code threw.
+    Reader& send();
+    /// Checks that the whole reply was read.
+    void done();
+    /// send(), then the result of type R, then done().
+    template <class R>
+    R result() {
+        R value = send().template get<R>();
+        done();
+        return value;
+    }
+
+  private:
+    Link& link_;
+    std::unique_lock<std::recursive_mutex> lock_;
+    Op op_;
+    Writer args_;
+    const Tracer* tracer_ = nullptr;
+    std::size_t pushed_tracers_ = 0, pushed_scenes_ = 0;
+    Frame reply_;
+    std::unique_ptr<Reader> reader_;
+};
+
+/// Serves one incoming call: decodes the arguments, runs the lab function linked
+/// into this program, and encodes [tracer state][result] (serve_ops.cpp).
+void serve_op(Link& link, Op op, Reader& in, Writer& out);
+
+} // namespace whitted::link

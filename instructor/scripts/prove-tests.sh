@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Proves that the lab tests test something (instructors and CI):
+#   - the reference solution passes every test (make test does this too);
+#   - every untouched stub fails every test of its own lab, and only of labs that use it;
+#   - every catalogued mistake in instructor/tests/mistakes/ is caught by its lab's tests.
+# Builds in build-proofs/ with -DWHITTED_PROOFS=ON; prints "mistakes caught: N/N".
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${BUILD_DIR:-build-proofs}
+jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+
+test -f "$build/CMakeCache.txt" || cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DWHITTED_PROOFS=ON > /dev/null
+cmake --build "$build" -j"$jobs" > "$build.log" 2>&1 || { tail -40 "$build.log"; exit 1; }
+
+cd "$build"
+status=0
+ctest -j"$jobs" -L 'stub|independence|mistake' --output-junit proofs.xml > proofs.log 2>&1 || status=1
+count() { grep -cE "$1" proofs.log || true; }
+stub_total=$(count 'Test +#[0-9]+: stub\.')
+stub_failed=$(grep -E 'Test +#[0-9]+: stub\.' proofs.log | grep -cv ' Passed ' || true)
+indep_total=$(count 'Test +#[0-9]+: independence\.')
+indep_failed=$(grep -E 'Test +#[0-9]+: independence\.' proofs.log | grep -cv ' Passed ' || true)
+mistakes_total=$(count 'Test +#[0-9]+: mistake\.')
+mistakes_missed=$(grep -E 'Test +#[0-9]+: mistake\.' proofs.log | grep -v ' Passed ' | sed -E 's/.*: (mistake\.[^ ]+).*/\1/' || true)
+mistakes_caught=$((mistakes_total - $(printf '%s' "$mistakes_missed" | grep -c . || true)))
+
+echo "stub tests that fail as they must: $((stub_total - stub_failed))/$stub_total"
+echo "labs unaffected by later stubs: $((indep_total - indep_failed))/$indep_total"
+echo "mistakes caught: $mistakes_caught/$mistakes_total"
+if [ -n "$mistakes_missed" ]; then
+    echo "not caught:"
+    printf '  %s\n' $mistakes_missed
+fi
+if [ "$status" -ne 0 ]; then
+    grep -E '\*\*\*|Failed' proofs.log | head -40
+    exit 1
+fi

@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# End-to-end check of `whitted grade` (CI, after `make test`). Grades:
+#   reference  the reference solution as a submission: full marks, twice, with
+#              byte-identical results.json (once as a tree, once as its labs/);
+#   stubs      the untouched stubs: 0 points, every test not implemented or
+#              skipped for a failed prerequisite;
+#   broken     the reference with a compile error in lab 3, a segfault in lab 2
+#              and an endless loop in lab 5: those labs get their status, the
+#              other labs full marks, integration is skipped;
+#   budget     the reference with an endless loop in lab 2, --timeout 4 and
+#              --budget 20: lab 1 passes, the tests not started in time are
+#              timeouts that say so, and results.json is still valid.
+# Every results.json must be valid Gradescope JSON; every report.html must be
+# self-contained, with pictures for every image test. Prints how long each
+# grading took; exits non-zero on any failure.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+# shellcheck source=lib/grading-checks.sh
+source instructor/scripts/lib/grading-checks.sh test-grader
+
+# (a) The reference solution, as a student tree, then as its labs/ folder.
+mkdir -p "$work/reference-tree"
+cp -r solution "$work/reference-tree/labs"
+grade reference "$work/reference-tree" 0
+grade reference-again "$work/reference-tree/labs" 0
+check reference 'ok(results["score"] == 100, "score " + str(results["score"]) + ", expected 100")
+ok(all(t["status"] == "passed" for t in results["tests"]), "a test did not pass")'
+same_results reference reference-again "results.json is byte-identical for the same submission"
+
+# (b) The untouched stubs.
+mkdir -p "$work/stub-tree"
+cp -r labs "$work/stub-tree/labs"
+grade stubs "$work/stub-tree" 1
+check stubs 'ok(results["score"] == 0, "score " + str(results["score"]) + ", expected 0")
+for t in results["tests"]:
+    s = t["extra_data"]["status"]
+    if t["visibility"] == "hidden":
+        ok(s in ("failed", "skipped"), t["name"] + ": a hidden test shows " + s)
+    else:
+        ok(s == "not_implemented" or (s == "skipped" and "needs every test of" in t["output"]), t["name"] + ": " + s)
+ok(any(t["extra_data"]["status"] == "not_implemented" for t in results["tests"]), "no test was not implemented")'
+
+# (c) A compile error in lab 3, a segfault in lab 2, an endless loop in lab 5.
+mkdir -p "$work/broken-labs"
+cp solution/*.cpp "$work/broken-labs/"
+python3 instructor/scripts/lib/inject.py "$work/broken-labs" \
+    02_shadows spawn_ray 'volatile int* nowhere = nullptr; *nowhere = 1;' \
+    03_blinn_phong blinn_phong 'int oops = undeclared_variable;' \
+    05_refraction refracted_direction 'for (volatile unsigned long spin = 0;; spin = spin + 1) {}'
+grade broken "$work/broken-labs" 1 --timeout 2
+check broken 'for lab in ("01_ray_casting", "04_reflection", "06_fresnel"):
+    ok(lab_score(lab) == lab_max(lab), lab + ": " + str(lab_score(lab)) + " of " + str(lab_max(lab)))
+ok(visible_statuses("02_shadows") == {"crash", "skipped"}, "02_shadows: " + str(visible_statuses("02_shadows")))
+ok(statuses("03_blinn_phong") == {"compile_error"}, "03_blinn_phong: " + str(statuses("03_blinn_phong")))
+ok(visible_statuses("05_refraction") == {"timeout", "skipped"}, "05_refraction: " + str(visible_statuses("05_refraction")))
+ok(statuses("02_shadows") | statuses("05_refraction") <= {"crash", "timeout", "failed", "skipped"}, "hidden tests: " + str(statuses("02_shadows") | statuses("05_refraction")))
+ok(statuses("integration") == {"skipped"}, "integration: " + str(statuses("integration")))
+ok(all(lab_score(lab) == 0 for lab in ("02_shadows", "03_blinn_phong", "05_refraction", "integration")), "points for a broken lab")
+ok(any("undeclared_variable" in t["output"] and "labs/03_blinn_phong.cpp:" in t["output"] for t in by_lab["03_blinn_phong"]), "no compiler error shown")
+ok(any("SIGSEGV" in t["output"] for t in by_lab["02_shadows"]), "no SIGSEGV shown")'
+
+# (d) A time budget that runs out: a valid results.json, the tests not run are timeouts that say why. Lab 1 is
+# graded within about 8 s even on a machine twice as slow as the project's; each of lab 2's tests then waits 4 s.
+mkdir -p "$work/budget-labs"
+cp solution/*.cpp "$work/budget-labs/"
+python3 instructor/scripts/lib/inject.py "$work/budget-labs" 02_shadows is_lit 'for (volatile unsigned long spin = 0;; spin = spin + 1) {}'
+grade budget "$work/budget-labs" 1 --timeout 4 --budget 20
+check budget 'ok(lab_score("01_ray_casting") == lab_max("01_ray_casting"), "01_ray_casting: " + str(lab_score("01_ray_casting")))
+ok(0 < results["score"] < 100, "score " + str(results["score"]) + " with a budget of 20 s")
+ok(any("time budget of 20 s ran out" in t["output"] for t in results["tests"]), "no test says the budget ran out")'
+
+echo
+echo "grading times (2 jobs):"
+printf '  %s\n' "${summary[@]}"
+if [ "$failures" -ne 0 ]; then
+    echo "test-grader: $failures check(s) failed"
+    exit 1
+fi
+echo "test-grader: all checks passed"

@@ -1,0 +1,137 @@
+// results.json follows Gradescope's format and is the same bytes every time;
+// report.html is self-contained.
+#include "grader/html_report.hpp"
+#include "grader/results_json.hpp"
+#include "grader/text.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+using namespace whitted::grade;
+
+namespace {
+
+GradingResult sample() {
+    GradingResult result;
+    LabResult lab;
+    lab.lab = "02_shadows";
+    lab.title = "Lab 2: shadows";
+    TestOutcome passed;
+    passed.name = "SpawnRay.Grazing";
+    passed.status = Status::passed;
+    TestOutcome stub;
+    stub.name = "HiddenShading.Lambert";
+    stub.status = Status::not_implemented;
+    stub.message = "labs/02_shadows.cpp:14: spawn_ray() is not implemented yet";
+    lab.tests = {{passed, "unit", 333, 333}, {stub, "hidden", 167, 0}};
+    lab.score_cents = 333;
+    lab.max_cents = 500;
+    result.labs.push_back(lab);
+    result.score_cents = 333;
+    result.max_cents = 500;
+    return result;
+}
+
+} // namespace
+
+TEST(ResultsJson, HasGradescopesFieldsAndHidesHiddenTests) {
+    const nlohmann::json json = nlohmann::json::parse(results_json(sample()));
+    EXPECT_EQ(json["score"], 3.33);
+    EXPECT_EQ(json["visibility"], "visible");
+    EXPECT_EQ(json["stdout_visibility"], "hidden");
+    ASSERT_EQ(json["tests"].size(), 2u);
+    const nlohmann::json& hidden = json["tests"][1];
+    EXPECT_EQ(hidden["name"], "Lab 2: shadows: HiddenShading.Lambert");
+    EXPECT_EQ(hidden["number"], "1.2");
+    EXPECT_EQ(hidden["score"], 0.0);
+    EXPECT_EQ(hidden["max_score"], 1.67);
+    EXPECT_EQ(hidden["status"], "failed");
+    EXPECT_EQ(hidden["visibility"], "hidden");
+    EXPECT_EQ(json["tests"][0]["visibility"], "visible");
+    EXPECT_EQ(hidden["output"], "failed\nThe details of hidden tests are not shown.\n");
+    EXPECT_EQ(hidden["extra_data"]["status"], "failed");
+    EXPECT_FALSE(json.contains("execution_time"));
+}
+
+// The student's code chooses how a test ends (crash, timeout, exception, not
+// implemented, wrong answer) and may choose from a hidden test's inputs: a
+// student sees only passed or failed of a hidden test, in every place.
+TEST(ResultsJson, AHiddenTestShowsOnlyPassedOrFailed) {
+    for (const Status status : {Status::failed, Status::not_implemented, Status::exception, Status::crash, Status::timeout}) {
+        GradingResult result = sample();
+        result.labs[0].tests[1].outcome.status = status;
+        const nlohmann::json json = nlohmann::json::parse(results_json(result));
+        const std::string name(status_name(status));
+        EXPECT_EQ(json["tests"][1]["extra_data"]["status"], "failed") << name;
+        EXPECT_EQ(json["tests"][1]["tags"][2], "failed") << name;
+        EXPECT_EQ(json["tests"][1]["output"], "failed\nThe details of hidden tests are not shown.\n") << name;
+        EXPECT_EQ(status_counts(result.labs[0], Audience::student), "1/2 passed (1 failed)") << name;
+        EXPECT_EQ(json["output"].get<std::string>().find(std::string(status_label(status))), 
+                  status == Status::failed ? json["output"].get<std::string>().find("failed") : std::string::npos) << name;
+        const std::string html = html_report(result);
+        EXPECT_NE(html.find("<span class=\"badge failed\">failed</span><b>HiddenShading.Lambert"), std::string::npos) << name;
+        EXPECT_EQ(status_counts(result.labs[0], Audience::instructor), "1/2 passed (1 " + std::string(status_label(status)) + ")");
+    }
+    GradingResult skipped = sample();
+    skipped.labs[0].tests[1].outcome.status = Status::skipped; // decided by the visible tests: shown as it is
+    EXPECT_EQ(status_counts(skipped.labs[0], Audience::student), "1/2 passed (1 skipped)");
+}
+
+TEST(ResultsJson, SameResultGivesTheSameBytes) { EXPECT_EQ(results_json(sample()), results_json(sample())); }
+
+TEST(ResultsJson, AGraderFailureStillWritesValidJsonWithScoreZero) {
+    const nlohmann::json json = nlohmann::json::parse(results_json(GradingResult{}, "configuring failed"));
+    EXPECT_EQ(json["score"], 0.0);
+    EXPECT_NE(json["output"].get<std::string>().find("configuring failed"), std::string::npos);
+}
+
+TEST(HtmlReport, ListsFailuresFirstAndLoadsNothingFromOutside) {
+    const std::string html = html_report(sample());
+    EXPECT_LT(html.find("HiddenShading.Lambert"), html.find("SpawnRay.Grazing"));
+    EXPECT_EQ(html.find("http"), std::string::npos);
+    EXPECT_NE(html.find("3.33 / 5.00"), std::string::npos);
+}
+
+// A hidden test's pictures would show the student its secret scene and reference.
+// Bytes that are not UTF-8 (printed by the student's code, or in a compiler's
+// message) must not stop results.json from being written.
+TEST(ResultsJson, OutputThatIsNotUtf8StillGivesValidJson) {
+    GradingResult result = sample();
+    result.labs[0].tests[1].outcome.output = "printed \xff\xfe by the student";
+    result.labs[0].compile_errors = "error: \xff";
+    const std::string text = results_json(result);
+    EXPECT_FALSE(nlohmann::json::parse(text, nullptr, false).is_discarded()) << text;
+}
+
+TEST(HtmlReport, ShowsNothingOfAHiddenTestButItsStatus) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("reports_test_" + std::to_string(getpid()));
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "yours.png") << "not really a PNG";
+    GradingResult result = sample();
+    result.labs[0].tests[0].outcome.pictures = folder;
+    result.labs[0].tests[1].outcome.pictures = folder;
+    result.labs[0].tests[1].outcome.output = "expected (0.0989, 0.2227) SECRET-INPUTS";
+    result.labs[0].tests[1].outcome.image = ImageNumbers{};
+    const std::string html = html_report(result);
+    std::filesystem::remove_all(folder);
+    std::size_t pictures = 0;
+    for (std::size_t at = html.find("<img"); at != std::string::npos; at = html.find("<img", at + 1)) ++pictures;
+    EXPECT_EQ(pictures, 1u) << "only the visible test's yours.png";
+    EXPECT_NE(html.find("The details of hidden tests are not shown."), std::string::npos);
+    EXPECT_EQ(html.find("SECRET-INPUTS"), std::string::npos) << "a hidden test's output";
+    EXPECT_EQ(html.find("spawn_ray() is not implemented"), std::string::npos) << "a hidden test's message";
+    EXPECT_EQ(html.find("image gate"), std::string::npos) << "a hidden test's image numbers";
+}
+
+TEST(Text, PathsBecomeRelativeLongestFirst) {
+    EXPECT_EQ(replace_paths("/tmp/out/labs/x.cpp:3 and /tmp/out/build/y and /src/tests/z",
+                            {{"/tmp/out/", ""}, {"/tmp/out/labs/", "labs/"}, {"/src/", ""}}),
+              "labs/x.cpp:3 and build/y and tests/z");
+    EXPECT_EQ(format_points(1234), "12.34");
+    EXPECT_EQ(format_points(5), "0.05");
+    EXPECT_EQ(trim_text("a\nb\nc\n", 2), "a\nb\n[... 1 more lines]\n");
+}

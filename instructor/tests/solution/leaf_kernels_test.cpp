@@ -1,0 +1,229 @@
+// The reference renderer's fast path (float four-wide BVH, distance-only leaf
+// kernels) must answer exactly as the labs' code testing every primitive does,
+// and render the very same image, bit for bit.
+#include "whitted/labs.hpp"
+#include "whitted/leaf_kernels.hpp"
+#include "whitted/render.hpp"
+#include "whitted/scene_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <ostream>
+#include <random>
+#include <string>
+#include <tuple>
+
+using namespace whitted;
+
+
+namespace {
+
+// Which shapes a random scene holds: all four kinds interleaved (leaves of
+// mixed kinds), or spheres only, or triangles only.
+enum class Layout { mixed, spheres, triangles };
+
+// Random spheres, triangles (some flat in an axis plane: boxes of zero
+// thickness), boxes and a plane, all moved by `offset`, so that far-away
+// coordinates stress the float boxes' rounding.
+SceneData random_scene(unsigned seed, int count, Vec3 offset, double scale, Layout layout = Layout::mixed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> position(-10.0, 10.0), size(0.05, 1.5);
+    SceneData data;
+    data.materials.push_back(Material{});
+    for (int i = 0; i < count; ++i) {
+        const Point3 c = offset + scale * Point3(position(rng), position(rng), position(rng));
+        const double a = scale * size(rng), b = scale * size(rng), h = scale * size(rng);
+        const int kind = layout == Layout::mixed ? i % 4 : layout == Layout::spheres ? 0 : 1 + i % 2;
+        switch (kind) {
+        case 0: data.primitives.push_back({Sphere{c, a}}); break;
+        case 1: data.primitives.push_back({Triangle{c, c + Vec3(a, 0.0, h), c + Vec3(0.0, b, h)}}); break;
+        case 2: data.primitives.push_back({Triangle{c, c + Vec3(a, 0.0, 0.0), c + Vec3(0.0, b, 0.0)}}); break;
+        default: data.primitives.push_back({Box{c, c + Vec3(a, b, h)}}); break;
+        }
+    }
+    data.primitives.push_back({Plane{offset + Point3(0.0, -12.0 * scale, 0.0), Vec3(0.0, 1.0, 0.0)}});
+    return data;
+}
+
+// Rays from anywhere around the cloud; one in three has a zero direction
+// component and one in five runs exactly along an axis.
+Ray random_ray(std::mt19937& rng, Vec3 offset, double scale) {
+    std::uniform_real_distribution<double> position(-15.0, 15.0), unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> pick(0, 14);
+    Vec3 d;
+    do d = Vec3(unit(rng), unit(rng), unit(rng));
+    while (glm::length(d) < 0.1);
+    const int kind = pick(rng);
+    if (kind % 3 == 0) d[kind % 2] = 0.0;
+    if (kind % 5 == 0) d = Vec3(0.0), d[kind % 3] = kind > 7 ? 1.0 : -1.0;
+    return Ray{offset + scale * Point3(position(rng), position(rng), position(rng)), glm::normalize(d)};
+}
+
+struct Setting {
+    const char* name;
+    Vec3 offset;
+    double scale;
+};
+
+// Names a setting in test listings and messages (instead of its bytes).
+void PrintTo(const Setting& setting, std::ostream* out) { *out << setting.name; }
+
+const char* name(Layout layout) {
+    return layout == Layout::mixed ? "mixed" : layout == Layout::spheres ? "spheres" : "triangles";
+}
+
+class FastPath : public ::testing::TestWithParam<std::tuple<Setting, Layout>> {};
+
+} // namespace
+
+TEST_P(FastPath, ClosestHitAndOcclusionAgreeWithTestingEveryPrimitive) {
+    const auto [setting, layout] = GetParam();
+    const Scene labs(random_scene(3, 2000, setting.offset, setting.scale, layout));
+    const Scene fast(random_scene(3, 2000, setting.offset, setting.scale, layout), linked_leaf_kernels());
+    ASSERT_NE(linked_leaf_kernels(), nullptr);
+    std::mt19937 rng(5);
+    int hits = 0, blocked = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Ray ray = random_ray(rng, setting.offset, setting.scale);
+        const auto expected = closest_hit(ray, labs.primitives(), Interval{});
+        for (const Scene* scene : {&labs, &fast}) {
+            const auto found = scene->closest_hit(ray);
+            ASSERT_EQ(expected.has_value(), found.has_value()) << "ray " << i << (scene == &fast ? " (kernels)" : "");
+            if (!expected) continue;
+            EXPECT_EQ(expected->t, found->t) << "ray " << i;
+            EXPECT_EQ(expected->primitive, found->primitive) << "ray " << i;
+            EXPECT_EQ(expected->normal, found->normal) << "ray " << i;
+        }
+        hits += expected.has_value();
+        const Interval shadow_range{0.0, 6.0 * setting.scale};
+        const bool expected_blocked = closest_hit(ray, labs.primitives(), shadow_range).has_value();
+        ASSERT_EQ(expected_blocked, labs.occluded(ray, shadow_range)) << "ray " << i;
+        ASSERT_EQ(expected_blocked, fast.occluded(ray, shadow_range)) << "ray " << i << " (kernels)";
+        blocked += expected_blocked;
+    }
+    EXPECT_GT(hits, 700);    // the comparison means something only if many rays hit
+    EXPECT_GT(blocked, 150); // ... and many, but not all, feelers are blocked
+    EXPECT_LT(blocked, 2850);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, FastPath,
+                         ::testing::Combine(::testing::Values(Setting{"unit", Vec3(0.0), 1.0},
+                                                              Setting{"far_away", Vec3(3e6, -2e6, 1e6), 1.0},
+                                                              Setting{"tiny", Vec3(1e-3), 1e-5},
+                                                              Setting{"huge", Vec3(0.0), 1e9}),
+                                            ::testing::Values(Layout::mixed, Layout::spheres, Layout::triangles)),
+                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + name(std::get<1>(info.param)); });
+
+TEST(FastPath, EqualDistancesGoToTheFirstPrimitiveAsInTheLabs) {
+    // Copies of one triangle and of one sphere, side by side in one leaf: every
+    // copy is hit at the same t, and the labs' loop (a strictly nearer hit
+    // replaces the one kept) answers with the first copy. So must the kernels.
+    SceneData data;
+    data.materials.push_back(Material{});
+    const Triangle triangle{Point3(-1.0, -1.0, 0.0), Point3(1.0, -1.0, 0.0), Point3(0.0, 1.0, 0.0)};
+    const Sphere sphere{Point3(0.0, 0.0, 5.0), 1.0};
+    for (int i = 0; i < 3; ++i) data.primitives.push_back({sphere});
+    for (int i = 0; i < 4; ++i) data.primitives.push_back({triangle});
+    const Scene labs(data);
+    const Scene fast(data, linked_leaf_kernels());
+    for (const Ray& ray : {Ray{Point3(0.1, 0.0, -3.0), Vec3(0.0, 0.0, 1.0)}, Ray{Point3(0.1, 0.0, 9.0), Vec3(0.0, 0.0, -1.0)}}) {
+        const auto expected = closest_hit(ray, labs.primitives(), Interval{});
+        const auto found = fast.closest_hit(ray);
+        ASSERT_TRUE(expected && found);
+        EXPECT_EQ(expected->primitive, found->primitive);
+        EXPECT_EQ(expected->t, found->t);
+    }
+}
+
+TEST(FastPath, ExactEdgesCountAsInTheLabs) {
+    // Two copies of a triangle (one leaf) with corners p0 = (-1,-1,0), p1 = (1,-1,0), p2 = (0,1,0). Aimed along +z at p1
+    // from (1,-1,-3): e1 = (2,0,0), e2 = (1,2,0), p = d x e2 = (-2,1,0),
+    // det = -4, s = (2,0,-3), b1 = -4 / -4 = 1 exactly, q = s x e1 = (0,-6,0),
+    // b2 = 0, t = e2.q / det = 3: every number exact, and the corner is a hit
+    // (the test rejects only b1 > 1). A shadow feeler whose range ends at
+    // exactly t = 3 is not blocked (ranges are open).
+    SceneData data;
+    data.materials.push_back(Material{});
+    const Triangle triangle{Point3(-1.0, -1.0, 0.0), Point3(1.0, -1.0, 0.0), Point3(0.0, 1.0, 0.0)};
+    for (int i = 0; i < 2; ++i) data.primitives.push_back({triangle});
+    const Ray ray{Point3(1.0, -1.0, -3.0), Vec3(0.0, 0.0, 1.0)};
+    const Scene fast(data, linked_leaf_kernels());
+    const auto found = fast.closest_hit(ray);
+    ASSERT_TRUE(found);
+    EXPECT_EQ(found->t, 3.0);
+    EXPECT_EQ(found->primitive, 0u);
+    EXPECT_TRUE(fast.occluded(ray, Interval{0.0, 3.5}));
+    EXPECT_FALSE(fast.occluded(ray, Interval{0.0, 3.0}));
+    EXPECT_FALSE(fast.occluded(ray, Interval{3.0, 4.0}));
+}
+
+TEST(FastPath, RendersTheSameImageAsTheLabsForEveryShippedScene) {
+    // Every shape kind appears in these: spheres (inward too), planes, triangles, boxes, cones.
+    std::vector<std::filesystem::path> files;
+    for (const char* folder : {WHITTED_SOURCE_DIR "/scenes", WHITTED_SOURCE_DIR "/instructor/tests/hidden/scenes"})
+        for (const auto& entry : std::filesystem::directory_iterator(folder)) files.push_back(entry.path());
+    ASSERT_GE(files.size(), 8u);
+    for (const auto& file : files) {
+        LoadedScene loaded = load_scene(file.string());
+        loaded.data.camera = loaded.data.camera.with_resolution(48, 36);
+        const RenderSettings settings;
+        const Scene labs(loaded.data);
+        const Scene fast(loaded.data, linked_leaf_kernels());
+        const Image a = render(labs, settings, 2).image;
+        const Image b = render(fast, settings, 2).image;
+        EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color))) << file;
+    }
+}
+
+TEST(FastPath, ImageIsBitIdenticalForAnyThreadCount) {
+    LoadedScene loaded = load_scene(WHITTED_SOURCE_DIR "/scenes/whitted_1980.p3f");
+    loaded.data.camera = loaded.data.camera.with_resolution(64, 48);
+    const Scene scene(loaded.data, linked_leaf_kernels());
+    const Image one = render(scene, RenderSettings{}, 1).image;
+    for (int threads : {2, 3, 8}) {
+        const Image many = render(scene, RenderSettings{}, threads).image;
+        EXPECT_EQ(0, std::memcmp(one.pixels.data(), many.pixels.data(), one.pixels.size() * sizeof(Color))) << threads;
+    }
+}
+
+TEST(FastPath, RaysGrazingFarAwayBoxesFromNearTheOriginStillHitThem) {
+    // Boxes a million units away, rays from near the origin aimed a hair
+    // (1e-9 of the box size) inside a corner: the float boxes' rounding is far
+    // larger than that hair, so only boxes widened beyond their rounding keep
+    // these hits (the ray's own margin, 2^-20 |origin|, is tiny here).
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> position(-1.0, 1.0), size(0.5, 3.0);
+    SceneData data;
+    data.materials.push_back(Material{});
+    std::vector<Box> boxes;
+    for (int i = 0; i < 500; ++i) {
+        const Point3 low = Point3(1e6, 2e6, -1.5e6) + 1e4 * Point3(position(rng), position(rng), position(rng));
+        boxes.push_back(Box{low, low + Vec3(size(rng), size(rng), size(rng))});
+        data.primitives.push_back({boxes.back()});
+    }
+    const Scene labs(data);
+    const Scene fast(data, linked_leaf_kernels());
+    int hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Box& box = boxes[i % boxes.size()];
+        const int corner = i / static_cast<int>(boxes.size()) * 3 + i;
+        const Point3 c((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                       (corner & 4) ? box.max.z : box.min.z);
+        const Point3 target = c + 1e-9 * (0.5 * (box.min + box.max) - c);
+        const Point3 origin = 1e-3 * Point3(position(rng), position(rng), position(rng));
+        const Ray ray{origin, glm::normalize(target - origin)};
+        const auto expected = closest_hit(ray, labs.primitives(), Interval{}); // every primitive, no BVH
+        for (const Scene* scene : {&labs, &fast}) {
+            const auto found = scene->closest_hit(ray);
+            ASSERT_EQ(expected.has_value(), found.has_value()) << "ray " << i;
+            if (expected) {
+                EXPECT_EQ(expected->t, found->t) << "ray " << i;
+            }
+            ASSERT_EQ(expected.has_value(), scene->occluded(ray, Interval{0.0, 1e7})) << "ray " << i;
+        }
+        hits += expected.has_value();
+    }
+    EXPECT_GT(hits, 1900);
+}

@@ -1,9 +1,0 @@
-// Hidden lab 1 picture: its own scene (tests/hidden/scenes/01_ray_casting_hidden.p3f) at stage 1.
-#include "image_check.hpp"
-
-#include <gtest/gtest.h>
-
-TEST(HiddenLab1Image, HiddenSceneMatchesTheReference) {
-    whitted::testing_helpers::expect_matches_reference({"tests/hidden/scenes/01_ray_casting_hidden.p3f",
-                                                        "tests/hidden/01_ray_casting/01_ray_casting_hidden.png", 1, 200, 150});
-}

@@ -1,9 +1,0 @@
-// Hidden lab 2 picture: its own scene (tests/hidden/scenes/02_shadows_hidden.p3f) at stage 2.
-#include "image_check.hpp"
-
-#include <gtest/gtest.h>
-
-TEST(HiddenLab2Image, HiddenSceneMatchesTheReference) {
-    whitted::testing_helpers::expect_matches_reference(
-        {"tests/hidden/scenes/02_shadows_hidden.p3f", "tests/hidden/02_shadows/02_shadows_hidden.png", 2, 200, 150});
-}

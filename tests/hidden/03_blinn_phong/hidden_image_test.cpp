@@ -1,9 +1,0 @@
-// Hidden lab 3 picture: its own scene (tests/hidden/scenes/03_blinn_phong_hidden.p3f) at stage 3.
-#include "image_check.hpp"
-
-#include <gtest/gtest.h>
-
-TEST(HiddenLab3Image, HiddenSceneMatchesTheReference) {
-    whitted::testing_helpers::expect_matches_reference(
-        {"tests/hidden/scenes/03_blinn_phong_hidden.p3f", "tests/hidden/03_blinn_phong/03_blinn_phong_hidden.png", 3, 200, 150});
-}
