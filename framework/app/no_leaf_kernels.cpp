@@ -1,6 +1,6 @@
 // Builds that render with the student's labs have no fast leaf kernels: every
 // intersection goes through the student's own code.
-#include "whitted/leaf_kernels.hpp"
+#include "whitted/engine/leaf_kernels.hpp"
 
 namespace whitted {
 

@@ -5,7 +5,7 @@
 #include "stage_choice.hpp"
 #include "whitted/image_pictures.hpp"
 #include "whitted/lab_status.hpp"
-#include "whitted/leaf_kernels.hpp"
+#include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/passes.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"

@@ -1,5 +1,5 @@
 // Binned surface-area-heuristic BVH construction.
-#include "whitted/bvh.hpp"
+#include "whitted/engine/bvh.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,5 +1,8 @@
 #include "whitted/scene.hpp"
 
+#include "whitted/engine/leaf_kernels.hpp"
+#include "whitted/engine/remote_queries.hpp"
+#include "whitted/engine/wide_bvh.hpp"
 #include "whitted/labs.hpp"
 
 #include <atomic>
@@ -56,7 +59,7 @@ Scene::Scene(SceneData data, const LeafKernels* kernels)
         }
     }
     const Bvh binary(boxes);
-    bvh_ = WideBvh(binary);
+    bvh_ = std::make_shared<const WideBvh>(binary);
     bounded_count_ = bounded.size();
     data_.primitives.clear();
     data_.primitives.reserve(bounded.size() + unbounded.size());
@@ -71,6 +74,8 @@ Scene::Scene(SceneData data, const LeafKernels* kernels)
     }
     for (std::size_t i = 0; i < data_.primitives.size(); ++i) data_.primitives[i].id = static_cast<std::uint32_t>(i);
 }
+
+std::size_t Scene::acceleration_bytes() const { return bvh_->bytes(); }
 
 SceneData Scene::source_data() const {
     SceneData data = data_;
@@ -91,7 +96,7 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     // Infinite planes first: a plane hit shortens the range the BVH must search.
     std::optional<Hit> nearest = whitted::closest_hit(ray, all.subspan(bounded_count_), t_range);
     if (nearest) t_range.max = nearest->t;
-    bvh_.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+    bvh_->traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
         if (auto hit = whitted::closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max})) {
             nearest = hit;
             return hit->t;
@@ -102,9 +107,9 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     return nearest;
 }
 
-// The same search with the fast queries: distances only, then one Hit for the nearest.
+// The same search with the leaf kernels: distances only, then one Hit for the nearest.
 std::optional<Hit> Scene::closest_hit_with_kernels(const Ray& ray, Interval t_range) const {
-    const SceneView view{data_.primitives, bounded_count_, bvh_};
+    const SceneView view{data_.primitives, bounded_count_, *bvh_};
     const std::optional<std::uint32_t> nearest = kernels_->closest(view, ray, t_range);
     if (!nearest) return std::nullopt;
     std::optional<Hit> hit = intersect(ray, data_.primitives[*nearest], t_range);
@@ -121,7 +126,7 @@ bool Scene::occluded(const Ray& ray, Interval t_range) const {
         if (intersect(ray, plane, t_range)) return true;
     }
     bool blocked = false;
-    bvh_.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+    bvh_->traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
         for (const Primitive& primitive : all.subspan(first, count)) {
             if (intersect(ray, primitive, Interval{t_range.min, t_max})) {
                 blocked = true;
@@ -150,13 +155,13 @@ QueryCost Scene::query_cost(const Ray& ray, Interval t_range, bool any_hit) cons
     const std::span<const Primitive> planes = all.subspan(bounded_count_);
     if (any_hit) {
         if (test_one_by_one(planes, t_range)) return cost;
-        bvh_.traverse_counting<false>(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+        bvh_->traverse_counting<false>(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
             return test_one_by_one(all.subspan(first, count), Interval{t_range.min, t_max}) ? -1.0 : t_max;
         }, nodes);
     } else {
         cost.primitive_tests = planes.size();
         if (const std::optional<Hit> hit = whitted::closest_hit(ray, planes, t_range)) t_range.max = hit->t;
-        bvh_.traverse_counting(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+        bvh_->traverse_counting(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
             cost.primitive_tests += count;
             const std::optional<Hit> hit = whitted::closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max});
             return hit ? hit->t : t_max;
@@ -167,7 +172,7 @@ QueryCost Scene::query_cost(const Ray& ray, Interval t_range, bool any_hit) cons
 }
 
 bool Scene::occluded_with_kernels(const Ray& ray, Interval t_range) const {
-    return kernels_->occluded(SceneView{data_.primitives, bounded_count_, bvh_}, ray, t_range);
+    return kernels_->occluded(SceneView{data_.primitives, bounded_count_, *bvh_}, ray, t_range);
 }
 
 } // namespace whitted

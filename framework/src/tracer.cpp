@@ -24,133 +24,190 @@ void RayStats::count(RayKind kind) {
     }
 }
 
+// What a tracer holds: the scene and settings it follows, where its counts go,
+// and where it stands within the current pixel.
+struct Tracer::Engine {
+    const Scene& scene;
+    const RenderSettings& settings;
+    RayStats& stats;
+    RayTree* tree = nullptr;
+    Color path_weight{1.0};         // accumulated weight of the ray being traced
+    std::uint32_t pixel_rays = 0;   // rays cast so far for the current pixel
+    bool pixel_cut_short = false;
+    int current_node = -1;          // the ray being shaded, in tree
+
+    /// Whitted's adaptive depth control: a secondary ray too weak to change the pixel.
+    bool too_weak(RayKind kind, const Color& weight) const {
+        return kind != RayKind::eye && glm::all(glm::lessThan(weight, Color(settings.min_weight)));
+    }
+    /// Counts one more ray for the current pixel; false once the pixel is over budget.
+    bool within_budget() {
+        if (++pixel_rays <= settings.max_rays_per_pixel) return true;
+        pixel_cut_short = true;
+        return false;
+    }
+    /// Returns `color` after writing it into the ray being shaded as one of its parts.
+    Color noted(std::optional<Color> RayNode::*part, const Color& color) {
+        if (tree && current_node >= 0) [[unlikely]]
+            tree->nodes[current_node].*part = color;
+        return color;
+    }
+
+    Color shade(const Tracer& tracer, const Ray& ray, int depth);
+    // Ray tree recording: only with a tree, and kept out of the way of renders without one.
+    [[gnu::noinline]] Color trace_recorded(const Tracer& tracer, const Ray& ray, int depth, RayKind kind, const Color& weight);
+    [[gnu::noinline]] bool occluded_recorded(const Ray& ray, double distance);
+    [[gnu::cold, gnu::noinline]] int record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight);
+    [[gnu::cold, gnu::noinline]] void record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked);
+};
+
+Tracer::Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats, RayTree* tree)
+    : engine_(std::make_unique<Engine>(Engine{scene, settings, stats, tree})) {}
+Tracer::Tracer(const Tracer& other) : engine_(std::make_unique<Engine>(*other.engine_)) {}
+Tracer& Tracer::operator=(const Tracer& other) {
+    if (this != &other) engine_ = std::make_unique<Engine>(*other.engine_);
+    return *this;
+}
+Tracer::~Tracer() = default;
+
+const Scene& Tracer::scene() const { return engine_->scene; }
+const RenderSettings& Tracer::settings() const { return engine_->settings; }
+bool Tracer::records_tree() const { return engine_->tree != nullptr; }
+
+TracerState Tracer::state() const {
+    const Engine& e = *engine_;
+    return {e.stats, e.path_weight, e.pixel_rays, e.pixel_cut_short};
+}
+
+void Tracer::restore(const TracerState& state) const {
+    Engine& e = *engine_;
+    e.stats = state.stats;
+    e.path_weight = state.path_weight;
+    e.pixel_rays = state.pixel_rays;
+    e.pixel_cut_short = state.pixel_cut_short;
+}
+
 Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
-    if (tree_) [[unlikely]]
-        return trace_recorded(ray, depth, kind, weight);
-    const Color parent_weight = path_weight_;
+    Engine& e = *engine_;
+    if (e.tree) [[unlikely]]
+        return e.trace_recorded(*this, ray, depth, kind, weight);
+    const Color parent_weight = e.path_weight;
     const Color path_weight = parent_weight * weight;
-    if (too_weak(kind, path_weight) || !within_budget()) return Color(0.0);
-    stats_.count(kind);
-    path_weight_ = path_weight;
-    const Color color = shade(ray, depth);
-    path_weight_ = parent_weight;
+    if (e.too_weak(kind, path_weight) || !e.within_budget()) return Color(0.0);
+    e.stats.count(kind);
+    e.path_weight = path_weight;
+    const Color color = e.shade(*this, ray, depth);
+    e.path_weight = parent_weight;
     return weight * color;
 }
 
 // trace() writing the ray into the tree: the same steps, in the same order.
-Color Tracer::trace_recorded(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
-    const Color parent_weight = path_weight_;
-    const Color path_weight = parent_weight * weight;
+Color Tracer::Engine::trace_recorded(const Tracer& tracer, const Ray& ray, int depth, RayKind kind, const Color& weight) {
+    const Color parent_weight = path_weight;
+    const Color weight_here = parent_weight * weight;
     const int node = record_ray(ray, Interval{}, depth, kind, weight);
-    if (too_weak(kind, path_weight)) {
-        tree_->nodes[node].fate = RayFate::below_min_weight;
+    if (too_weak(kind, weight_here)) {
+        tree->nodes[node].fate = RayFate::below_min_weight;
         return Color(0.0);
     }
     if (!within_budget()) {
-        tree_->nodes[node].fate = RayFate::over_budget;
+        tree->nodes[node].fate = RayFate::over_budget;
         return Color(0.0);
     }
-    stats_.count(kind);
-    path_weight_ = path_weight;
-    const int parent_node = std::exchange(current_node_, node);
-    const Color color = shade(ray, depth);
-    current_node_ = parent_node;
-    path_weight_ = parent_weight;
-    return tree_->nodes[node].color = weight * color;
+    stats.count(kind);
+    path_weight = weight_here;
+    const int parent_node = std::exchange(current_node, node);
+    const Color color = shade(tracer, ray, depth);
+    current_node = parent_node;
+    path_weight = parent_weight;
+    return tree->nodes[node].color = weight * color;
 }
 
 // The recursion of the slides: closest hit, local colour, then secondary rays.
-Color Tracer::shade(const Ray& ray, int depth) const {
-    const std::optional<Hit> hit = scene_.closest_hit(ray);
-    if (tree_) [[unlikely]]
-        tree_->nodes[current_node_].hit = hit;
-    if (!hit) return scene_.background();
-    const Material& material = scene_.material(*hit);
+Color Tracer::Engine::shade(const Tracer& tracer, const Ray& ray, int depth) {
+    const std::optional<Hit> hit = scene.closest_hit(ray);
+    if (tree) [[unlikely]]
+        tree->nodes[current_node].hit = hit;
+    if (!hit) return scene.background();
+    const Material& material = scene.material(*hit);
     const Vec3 wo = -ray.direction;
-    const auto reached = [stage = settings_.stage](Stage feature) { return stage >= stage_number(feature); };
+    const auto reached = [stage = settings.stage](Stage feature) { return stage >= stage_number(feature); };
 
     // Local colour: flat (ray casting), Lambert with shadows, then Blinn-Phong.
     if (!reached(Stage::shadows)) return noted(&RayNode::local, material.color_at(hit->point));
-    Color color = noted(&RayNode::local, reached(Stage::blinn_phong) ? blinn_phong(*this, *hit, wo) : lambert(*this, *hit));
-    if (!reached(Stage::reflection) || depth >= settings_.max_depth) return color;
+    Color color = noted(&RayNode::local, reached(Stage::blinn_phong) ? blinn_phong(tracer, *hit, wo) : lambert(tracer, *hit));
+    if (!reached(Stage::reflection) || depth >= settings.max_depth) return color;
 
     // Secondary rays, one level deeper.
     const bool transparent = material.transmittance > 0.0;
-    if (reached(Stage::fresnel) && transparent) return color + noted(&RayNode::fresnel, fresnel_blend(*this, *hit, wo, depth));
-    if (material.specular > 0.0) color += noted(&RayNode::reflection, reflection(*this, *hit, wo, depth));
-    if (reached(Stage::refraction) && transparent) color += noted(&RayNode::refraction, refraction(*this, *hit, wo, depth));
+    if (reached(Stage::fresnel) && transparent) return color + noted(&RayNode::fresnel, fresnel_blend(tracer, *hit, wo, depth));
+    if (material.specular > 0.0) color += noted(&RayNode::reflection, reflection(tracer, *hit, wo, depth));
+    if (reached(Stage::refraction) && transparent) color += noted(&RayNode::refraction, refraction(tracer, *hit, wo, depth));
     return color;
 }
 
 void Tracer::begin_pixel() const {
-    path_weight_ = Color(1.0);
-    pixel_rays_ = 0;
-    pixel_cut_short_ = false;
+    Engine& e = *engine_;
+    e.path_weight = Color(1.0);
+    e.pixel_rays = 0;
+    e.pixel_cut_short = false;
 }
 
 Color Tracer::trace_pixel(double x, double y) const {
+    Engine& e = *engine_;
     begin_pixel();
-    if (tree_) tree_->clear();
-    current_node_ = -1;
-    const Color color = trace(primary_ray(scene_.camera(), x, y), 1, RayKind::eye, Color(1.0));
-    if (pixel_cut_short_) ++stats_.pixels_cut_short;
+    if (e.tree) e.tree->clear();
+    e.current_node = -1;
+    const Color color = trace(primary_ray(e.scene.camera(), x, y), 1, RayKind::eye, Color(1.0));
+    if (e.pixel_cut_short) ++e.stats.pixels_cut_short;
     return color;
 }
 
-bool Tracer::within_budget() const {
-    if (++pixel_rays_ <= settings_.max_rays_per_pixel) return true;
-    pixel_cut_short_ = true;
-    return false;
-}
-
 bool Tracer::occluded(const Ray& ray, double distance) const {
-    if (tree_) [[unlikely]]
-        return occluded_recorded(ray, distance);
-    if (!within_budget()) return true; // over budget: no more light is gathered for this pixel
-    stats_.count(RayKind::shadow);
-    return scene_.occluded(ray, Interval{0.0, distance * (1.0 - 1e-6)});
+    Engine& e = *engine_;
+    if (e.tree) [[unlikely]]
+        return e.occluded_recorded(ray, distance);
+    if (!e.within_budget()) return true; // over budget: no more light is gathered for this pixel
+    e.stats.count(RayKind::shadow);
+    return e.scene.occluded(ray, Interval{0.0, distance * (1.0 - 1e-6)});
 }
 
 // occluded() writing the feeler into the tree.
-bool Tracer::occluded_recorded(const Ray& ray, double distance) const {
+bool Tracer::Engine::occluded_recorded(const Ray& ray, double distance) {
     const Interval t_range{0.0, distance * (1.0 - 1e-6)};
     if (!within_budget()) {
         record_feeler(ray, t_range, distance, RayFate::over_budget, true);
         return true;
     }
-    stats_.count(RayKind::shadow);
-    const bool blocked = scene_.occluded(ray, t_range);
+    stats.count(RayKind::shadow);
+    const bool blocked = scene.occluded(ray, t_range);
     record_feeler(ray, t_range, distance, RayFate::traced, blocked);
     return blocked;
 }
 
-int Tracer::record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight) const {
+int Tracer::Engine::record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight) {
     RayNode node;
     node.kind = kind;
     node.depth = depth;
-    node.parent = current_node_;
+    node.parent = current_node;
     node.ray = ray;
     node.t_range = t_range;
     node.weight = weight;
-    node.path_weight = path_weight_ * weight;
-    const int index = static_cast<int>(tree_->nodes.size());
-    if (current_node_ >= 0) tree_->nodes[current_node_].children.push_back(index);
-    tree_->nodes.push_back(std::move(node));
+    node.path_weight = path_weight * weight;
+    const int index = static_cast<int>(tree->nodes.size());
+    if (current_node >= 0) tree->nodes[current_node].children.push_back(index);
+    tree->nodes.push_back(std::move(node));
     return index;
 }
 
-void Tracer::record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked) const {
-    const int depth = current_node_ >= 0 ? tree_->nodes[current_node_].depth : 1;
-    RayNode& node = tree_->nodes[record_ray(ray, t_range, depth, RayKind::shadow, Color(1.0))];
+void Tracer::Engine::record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked) {
+    const int depth = current_node >= 0 ? tree->nodes[current_node].depth : 1;
+    RayNode& node = tree->nodes[record_ray(ray, t_range, depth, RayKind::shadow, Color(1.0))];
     node.fate = fate;
     node.light_distance = distance;
     node.blocked = blocked;
     // Which surface is in the way, and where: the answer to "why is this point dark?".
-    if (blocked && fate == RayFate::traced) node.hit = scene_.closest_hit(ray, t_range);
-}
-
-void Tracer::note(std::optional<Color> RayNode::*part, const Color& color) const {
-    if (current_node_ >= 0) tree_->nodes[current_node_].*part = color;
+    if (blocked && fate == RayFate::traced) node.hit = scene.closest_hit(ray, t_range);
 }
 
 } // namespace whitted

@@ -1,5 +1,5 @@
 // Collapsing the binary SAH tree into four-wide nodes with float boxes.
-#include "whitted/wide_bvh.hpp"
+#include "whitted/engine/wide_bvh.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 // whitted's shading left out as Embree's is.
 #include "embree_traffic.hpp"
 #include "output_size.hpp"
-#include "whitted/leaf_kernels.hpp"
+#include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/scene_loader.hpp"
 
 #include <CLI/CLI.hpp>

@@ -1,6 +1,7 @@
 // Lab 1 answered by the other side of the grading link (lab_link.hpp): its
 // functions, and the scene's two queries, which are made of its code.
 #include "lab_link.hpp"
+#include "whitted/engine/remote_queries.hpp"
 
 #include "whitted/labs.hpp"
 

@@ -6,12 +6,11 @@
 // changes, so any number of threads may query it at the same time.
 #pragma once
 
-#include "whitted/wide_bvh.hpp"
 #include "whitted/camera.hpp"
-#include "whitted/leaf_kernels.hpp"
 #include "whitted/material.hpp"
 #include "whitted/primitive.hpp"
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -40,17 +39,11 @@ struct QueryCost {
     std::uint64_t total() const { return box_tests + primitive_tests; }
 };
 
-class Scene;
-
-/// Scene queries answered by another process: a grading checker or worker
-/// whose lab 1 lives on the other side of the link (instructor/link/). Only
-/// those programs link a definition of `remote_scene_queries()` other than
-/// the framework's, which returns nullptr.
-struct RemoteSceneQueries {
-    std::optional<Hit> (*closest_hit)(const Scene& scene, const Ray& ray, Interval t_range);
-    bool (*occluded)(const Scene& scene, const Ray& ray, Interval t_range);
-};
-const RemoteSceneQueries* remote_scene_queries();
+// The engine behind the queries (whitted/engine/): the BVH, the reference
+// renderer's leaf kernels, the queries of a grading's other process.
+class WideBvh;
+struct LeafKernels;
+struct RemoteSceneQueries;
 
 class Scene {
   public:
@@ -76,7 +69,7 @@ class Scene {
     SceneData source_data() const;
 
     /// Bytes held by the acceleration structure.
-    std::size_t acceleration_bytes() const { return bvh_.bytes(); }
+    std::size_t acceleration_bytes() const;
 
     /// The material of the surface that was hit.
     const Material& material(const Hit& hit) const { return data_.materials[hit.material]; }
@@ -98,7 +91,7 @@ class Scene {
 
     SceneData data_;             // primitives: the BVH's ones first, in BVH order, then infinite planes
     std::size_t bounded_count_ = 0;
-    WideBvh bvh_;
+    std::shared_ptr<const WideBvh> bvh_; // built once, shared by copies (a scene never changes)
     const LeafKernels* kernels_ = nullptr;
     const RemoteSceneQueries* remote_ = nullptr; // remote_scene_queries(), looked up once
     std::vector<std::uint32_t> source_index_; // for each primitive, its index in the SceneData given

@@ -13,6 +13,7 @@
 #include "whitted/scene.hpp"
 
 #include <cstdint>
+#include <memory>
 
 namespace whitted {
 
@@ -59,11 +60,13 @@ class Tracer {
   public:
     /// A tracer for one thread: `stats` receives this thread's ray counts and
     /// `tree`, when given, the ray tree of the last pixel traced.
-    Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats, RayTree* tree = nullptr)
-        : scene_(scene), settings_(settings), stats_(stats), tree_(tree) {}
+    Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats, RayTree* tree = nullptr);
+    Tracer(const Tracer& other);
+    Tracer& operator=(const Tracer& other);
+    ~Tracer();
 
-    const Scene& scene() const { return scene_; }
-    const RenderSettings& settings() const { return settings_; }
+    const Scene& scene() const;
+    const RenderSettings& settings() const;
 
     /// The colour seen along `ray`, which is at `depth` in the ray tree (eye ray:
     /// 1), multiplied by `weight`: the coefficient (Ks, T, Kr...) with which this
@@ -85,49 +88,16 @@ class Tracer {
     bool occluded(const Ray& ray, double distance) const;
 
     /// This tracer's state (ray counts included) and a way to set it back.
-    TracerState state() const { return {stats_, path_weight_, pixel_rays_, pixel_cut_short_}; }
-    void restore(const TracerState& state) const {
-        stats_ = state.stats;
-        path_weight_ = state.path_weight;
-        pixel_rays_ = state.pixel_rays;
-        pixel_cut_short_ = state.pixel_cut_short;
-    }
+    TracerState state() const;
+    void restore(const TracerState& state) const;
     /// True when this tracer writes a ray tree.
-    bool records_tree() const { return tree_ != nullptr; }
+    bool records_tree() const;
+
+    /// The recursion's machinery (pixel budget, path weight, ray-tree recording), in tracer.cpp.
+    struct Engine;
 
   private:
-    Color shade(const Ray& ray, int depth) const;
-
-    // Ray tree recording: only with a tree, and kept out of the way of renders without one.
-    [[gnu::cold, gnu::noinline]] int record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind,
-                                                const Color& weight) const;
-    [[gnu::cold, gnu::noinline]] void record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate,
-                                                    bool blocked) const;
-    [[gnu::cold, gnu::noinline]] void note(std::optional<Color> RayNode::*part, const Color& color) const;
-    [[gnu::noinline]] Color trace_recorded(const Ray& ray, int depth, RayKind kind, const Color& weight) const;
-    [[gnu::noinline]] bool occluded_recorded(const Ray& ray, double distance) const;
-    /// Whitted's adaptive depth control: a secondary ray too weak to change the pixel.
-    bool too_weak(RayKind kind, const Color& path_weight) const {
-        return kind != RayKind::eye && glm::all(glm::lessThan(path_weight, Color(settings_.min_weight)));
-    }
-    /// Returns `color` after writing it into the ray being shaded as one of its parts.
-    Color noted(std::optional<Color> RayNode::*part, const Color& color) const {
-        if (tree_) [[unlikely]]
-            note(part, color);
-        return color;
-    }
-
-    const Scene& scene_;
-    const RenderSettings& settings_;
-    RayStats& stats_;
-    RayTree* tree_ = nullptr;
-    mutable int current_node_ = -1;         // the ray being shaded, in tree_
-    /// Counts one more ray for the current pixel; false once the pixel is over budget.
-    bool within_budget() const;
-
-    mutable Color path_weight_{1.0};        // accumulated weight of the ray being traced
-    mutable std::uint32_t pixel_rays_ = 0;  // rays cast so far for the current pixel
-    mutable bool pixel_cut_short_ = false;
+    std::unique_ptr<Engine> engine_;
 };
 
 } // namespace whitted

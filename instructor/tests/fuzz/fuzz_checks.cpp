@@ -1,7 +1,7 @@
 #include "fuzz_checks.hpp"
 
 #include "image_format.hpp"
-#include "whitted/leaf_kernels.hpp"
+#include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/render.hpp"
 
 #include <cmath>

@@ -3,7 +3,7 @@
 // bit for bit with the labs' intersection code. Each scene is one the loader
 // accepts; what it refuses (a polygon without area, a zero radius, from == at)
 // is in tests/bad_scenes/.
-#include "whitted/leaf_kernels.hpp"
+#include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 

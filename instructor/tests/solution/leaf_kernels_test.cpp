@@ -2,7 +2,7 @@
 // kernels) must answer exactly as the labs' code testing every primitive does,
 // and render the very same image, bit for bit.
 #include "whitted/labs.hpp"
-#include "whitted/leaf_kernels.hpp"
+#include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 

@@ -2,9 +2,9 @@
 // (wide_ray.hpp): cases found by an exact (GMP) fuzzer in review: directions
 // far from unit length, and a unit ray from the world origin along a face at 0.
 #include "whitted/labs.hpp"
-#include "whitted/leaf_kernels.hpp"
+#include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/scene.hpp"
-#include "whitted/wide_ray.hpp"
+#include "whitted/engine/wide_ray.hpp"
 
 #include <gtest/gtest.h>
 

@@ -14,8 +14,8 @@
 // until it has four.
 #pragma once
 
-#include "whitted/bvh.hpp"
-#include "whitted/wide_ray.hpp"
+#include "whitted/engine/bvh.hpp"
+#include "whitted/engine/wide_ray.hpp"
 
 #include <cstdint>
 #include <span>

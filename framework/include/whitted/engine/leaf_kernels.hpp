@@ -11,7 +11,7 @@
 
 #include "whitted/interval.hpp"
 #include "whitted/primitive.hpp"
-#include "whitted/wide_bvh.hpp"
+#include "whitted/engine/wide_bvh.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -19,7 +19,7 @@
 
 namespace whitted {
 
-/// What the fast queries see of a built scene: its primitives (the BVH's ones
+/// What the leaf kernels see of a built scene: its primitives (the BVH's ones
 /// first, in BVH order, then the infinite planes) and its BVH.
 struct SceneView {
     std::span<const Primitive> primitives;

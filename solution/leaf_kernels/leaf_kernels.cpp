@@ -1,4 +1,4 @@
-// The reference renderer's fast queries: the BVH walk with hit distances only
+// The reference renderer's leaf kernels: the BVH walk with hit distances only
 // inlined into it, with the same
 // arithmetic, operation for operation, as the reference labs (solution/01 for
 // spheres, planes and triangles; the framework's boxes and cones), so that the
@@ -6,7 +6,7 @@
 //
 // Why here and not in framework/: these are the answers to lab 1, and the
 // student handout ships framework/ but not solution/.
-#include "whitted/leaf_kernels.hpp"
+#include "whitted/engine/leaf_kernels.hpp"
 
 #include <cmath>
 #include <limits>

@@ -1,0 +1,27 @@
+// Scene queries answered by another process: a grading checker or worker
+// whose lab 1 lives on the other side of the link (instructor/link/).
+//
+// Why: the scene's two queries go through lab 1's code in a student build; when
+// lab 1 runs in the other process of a grading, the scene must ask it there.
+// Only those programs link a definition of `remote_scene_queries()` other than
+// the framework's, which returns nullptr.
+#pragma once
+
+#include "whitted/hit.hpp"
+#include "whitted/interval.hpp"
+
+#include <optional>
+
+namespace whitted {
+
+class Scene;
+
+struct RemoteSceneQueries {
+    std::optional<Hit> (*closest_hit)(const Scene& scene, const Ray& ray, Interval t_range);
+    bool (*occluded)(const Scene& scene, const Ray& ray, Interval t_range);
+};
+
+/// The queries of the other process, or nullptr in every program but a grading checker or worker.
+const RemoteSceneQueries* remote_scene_queries();
+
+} // namespace whitted
