@@ -70,6 +70,17 @@ inline Material glass_material(double ior, double transmittance = 1.0) {
     return m;
 }
 
+/// `count` parallel sheets of glass (planes facing +z at z = 0, -1, -2, ...) of index `ior` and transmittance
+/// `transmittance` (no diffuse light, no mirror term) in front of a white background: an eye ray straight
+/// down crosses them all, one refracted ray per sheet.
+inline SceneData glass_sheets(int count, double ior, double transmittance) {
+    SceneData data;
+    data.background = Color(1.0);
+    data.materials = {glass_material(ior, transmittance)};
+    for (int k = 0; k < count; ++k) data.primitives.push_back({Plane{Point3(0.0, 0.0, -k), kUp}, 0});
+    return data;
+}
+
 /// A scene, its render settings, ray counts and a tracer, for tests that call a
 /// lab function directly or count the rays one trace casts. min_weight defaults
 /// to 0: every secondary ray is traced down to max_depth.
