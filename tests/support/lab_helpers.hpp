@@ -70,6 +70,17 @@ inline Material glass_material(double ior, double transmittance = 1.0) {
     return m;
 }
 
+/// `count` parallel sheets of glass (planes facing +z at z = 0, -1, -2, ...) of index `ior` and transmittance
+/// `transmittance` (no diffuse light, no mirror term) in front of a white background: an eye ray straight
+/// down crosses them all, one refracted ray per sheet.
+inline SceneData glass_sheets(int count, double ior, double transmittance) {
+    SceneData data;
+    data.background = Color(1.0);
+    data.materials = {glass_material(ior, transmittance)};
+    for (int k = 0; k < count; ++k) data.primitives.push_back({Plane{Point3(0.0, 0.0, -k), kUp}, 0});
+    return data;
+}
+
 /// A scene, its render settings, ray counts and a tracer, for tests that call a
 /// lab function directly or count the rays one trace casts. min_weight defaults
 /// to 0: every secondary ray is traced down to max_depth.
@@ -140,18 +151,45 @@ inline Material shiny_material(Color color, double kd, Color specular_color = Co
     return m;
 }
 
-/// A scene of the given shapes, all with material 0, lit by `lights`, with ambient light `ambient`.
-inline Scene scene_of(std::vector<Shape> shapes, Material material, std::vector<PointLight> lights,
-                      Color ambient = Color(0.0)) {
+/// The data of a scene of the given shapes, all with material 0, lit by `lights`, with ambient light `ambient`.
+inline SceneData scene_data_of(std::vector<Shape> shapes, Material material, std::vector<PointLight> lights,
+                               Color ambient = Color(0.0)) {
     SceneData data;
     data.materials = {std::move(material)};
     for (Shape& shape : shapes) data.primitives.push_back(Primitive{std::move(shape), 0});
     data.lights = std::move(lights);
     data.ambient = ambient;
-    return Scene(std::move(data));
+    return data;
+}
+
+/// That scene, built.
+inline Scene scene_of(std::vector<Shape> shapes, Material material, std::vector<PointLight> lights,
+                      Color ambient = Color(0.0)) {
+    return Scene(scene_data_of(std::move(shapes), std::move(material), std::move(lights), ambient));
 }
 
 /// The floor z = 0 facing +z (kUp), so that direction_at(theta) is theta degrees from its normal.
 inline Plane floor_z0() { return Plane{Point3(0.0), kUp}; }
+
+/// A smooth surface: scene_of()'s scene whose first primitive is a large flat triangle in the plane z = 0
+/// (geometric normal +z) with all three vertex normals `shading`, so that the framework reports the
+/// shading normal `shading` (hit.normal) and the geometric normal +z (hit.geometric_normal) everywhere on it.
+inline Scene smooth_floor_scene(const Vec3& shading, std::vector<Shape> extra, Material material,
+                                std::vector<PointLight> lights, Color ambient = Color(0.0)) {
+    SceneData data = scene_data_of(std::move(extra), std::move(material), std::move(lights), ambient);
+    data.vertex_normals.push_back({shading, shading, shading});
+    Primitive triangle{Triangle{Point3(-10.0, -10.0, 0.0), Point3(10.0, -10.0, 0.0), Point3(0.0, 10.0, 0.0)}, 0};
+    triangle.vertex_normals = static_cast<std::int32_t>(data.vertex_normals.size() - 1);
+    data.primitives.insert(data.primitives.begin(), triangle);
+    return Scene(std::move(data));
+}
+
+/// The eye ray straight down (-z) onto the point (x, y, 0) of smooth_floor_scene()'s triangle.
+inline Ray ray_down_to(double x = 0.0, double y = 0.0) { return Ray{Point3(x, y, 5.0), -kUp}; }
+
+/// What that ray hits: the smooth triangle (or a shape in front of it).
+inline Hit smooth_floor_hit(const Scene& scene, double x = 0.0, double y = 0.0) {
+    return scene.closest_hit(ray_down_to(x, y)).value();
+}
 
 } // namespace whitted::testing_helpers

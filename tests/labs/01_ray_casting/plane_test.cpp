@@ -64,6 +64,17 @@ TEST(IntersectPlane, GrazingRayHitsFarAway) {
     EXPECT_TRUE(near(hit->point, {1000, 1, 0}, 1e-9));
 }
 
+TEST(IntersectPlane, AlmostParallelRayMeetsThePlaneTenMillionAway) {
+    // From (0, 2, 0) along normalize(1, -1e-7, 0): n . d = -1e-7 / sqrt(1 + 1e-14), so the ray drops the 1
+    // to the plane y = 1 after 1e7 along x: t = 1e7 sqrt(1 + 1e-14), at (1e7, 1, 0). Only n . d == 0 is
+    // parallel; a fixed "|n . d| < 1e-6" cuts the horizon off every ground plane.
+    const auto hit = intersect_plane(make_ray({0, 2, 0}, {1, -1e-7, 0}), kFloor, {});
+    ASSERT_TRUE(hit) << "n . d = -1e-7 is small, not zero: the ray meets the plane";
+    EXPECT_NEAR(hit->t, 1e7, 1e-6);
+    EXPECT_TRUE(near(hit->point, {1e7, 1, 0}, 1e-6));
+    EXPECT_TRUE(hit->front_face);
+}
+
 TEST(IntersectPlane, ParallelRayIsMissed) {
     EXPECT_FALSE(intersect_plane(make_ray({0, 3, 0}, {1, 0, 0}), kFloor, {})) << "n . d = 0: no intersection";
 }

@@ -72,6 +72,18 @@ TEST(PrimaryRay, NonSquareImagesWidenTheHorizontalFov) {
     EXPECT_TRUE(near(left.direction, glm::normalize(Vec3(-2, 0, -1)), 1e-15));
 }
 
+TEST(PrimaryRay, NonIntegerAspectRatioSpreadsXOverTheWholeWidth) {
+    // df = 1, fovy = 90, 7 x 3: h = 2 df tan 45 = 2 and w = 7 / 3 h = 14 / 3 (not 2 h: 7 / 3 is no
+    // whole number). Pixel (0, 2), centre (0.5, 2.5): w (0.5 / 7 - 1/2) = (14 / 3)(-6 / 14) = -2 along xe,
+    // h (2.5 / 3 - 1/2) = 2 / 3 along ye: d = normalize(-2, 2/3, -1). Pixel (6, 0), centre (6.5, 0.5),
+    // mirrors it through the centre: d = normalize(2, -2/3, -1).
+    const Camera camera = Camera::create({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 90.0, 7, 3);
+    EXPECT_TRUE(near(primary_ray(camera, 0.5, 2.5).direction, glm::normalize(Vec3(-2.0, 2.0 / 3.0, -1.0)), 1e-14))
+        << "top-left pixel of a 7 x 3 image: x spans w = ResX / ResY h (a fraction, 7 / 3), y spans h";
+    EXPECT_TRUE(near(primary_ray(camera, 6.5, 0.5).direction, glm::normalize(Vec3(2.0, -2.0 / 3.0, -1.0)), 1e-14))
+        << "bottom-right pixel of a 7 x 3 image";
+}
+
 TEST(Camera, WithResolutionKeepsTheVerticalFovAndWidensTheWidth) {
     // Same eye, at, up and fovy: the frame and h stay; w = 300 / 100 h.
     const Camera square = Camera::create({1, 5, 2}, {0, 1, 0}, {0, 1, 0}, 40.0, 100, 100);

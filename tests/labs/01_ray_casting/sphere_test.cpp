@@ -76,6 +76,25 @@ TEST(IntersectSphere, GrazingRayJustInsideHitsNearTheTangentPoint) {
     EXPECT_TRUE(hit->front_face);
 }
 
+TEST(IntersectSphere, SpheresTenMillionAwayKeepTheirDigits) {
+    // A sphere of radius r at (1e7, 0, 0), seen from the origin side along +x by a line 0.6 r off its
+    // centre: the half chord is sqrt(r^2 - 0.36 r^2) = 0.8 r, so t = 1e7 - 0.8 r at (1e7 - 0.8 r, 0.6 r, 0)
+    // with the normal (-0.8, 0.6, 0). Here b^2 and c' are both about 1e14, whose doubles are 1/64 apart:
+    // b^2 - c' loses the 0.64 r^2 it should give (a radius-1 sphere's t is off by about 4e-4, a
+    // radius-1e-3 one is missed or hit at its centre line); r^2 - |oc - b d|^2 keeps it.
+    for (const double r : {1.0, 1e-3}) {
+        SCOPED_TRACE(::testing::Message() << "radius " << r);
+        const Sphere far{{1e7, 0, 0}, r};
+        const auto hit = intersect_sphere(make_ray({0, 0.6 * r, 0}, {1, 0, 0}), far, {});
+        ASSERT_TRUE(hit) << "the line passes 0.6 r from the centre";
+        EXPECT_NEAR(hit->t, 1e7 - 0.8 * r, 1e-6) << "compute the discriminant as r^2 - |oc - b d|^2 (see the handout)";
+        // The hit point's x is rounded to about 2e-9 (the spacing of doubles near 1e7), which moves the
+        // normal (p - c) / r by 2e-6 when r = 1e-3.
+        EXPECT_TRUE(near(hit->normal, {-0.8, 0.6, 0}, 1e-5));
+        EXPECT_TRUE(hit->front_face);
+    }
+}
+
 TEST(IntersectSphere, SphereBehindTheOriginIsNotHit) {
     // Both roots (t = -12 and t = -8) are negative: the sphere lies behind the ray.
     EXPECT_FALSE(intersect_sphere(make_ray({1, 2, 7}, {0, 0, 1}), kSphere, {}))

@@ -79,6 +79,21 @@ TEST(IntersectTriangle, EdgeAndVertexPointsCountAsHits) {
     EXPECT_EQ(vertex->uv, Vec2(0.0, 1.0));
 }
 
+TEST(IntersectTriangle, TinyTriangleIsHitAndItsEdgesKept) {
+    // Legs 1e-3 along x and 5e-4 along y in z = 0: e1 x e2 = (0, 0, 5e-7), normal +z. From (2e-4, 1e-4, 1)
+    // along -z: t = 1 at b1 = 2e-4 / 1e-3 = 0.2, b2 = 1e-4 / 5e-4 = 0.2. The determinant e1 . (d x e2)
+    // is 5e-7 here: only det == 0 means a parallel ray (a fixed "det < 1e-6" loses every small triangle).
+    const Triangle tiny{{0, 0, 0}, {1e-3, 0, 0}, {0, 5e-4, 0}};
+    const auto hit = intersect_triangle(make_ray({2e-4, 1e-4, 1}, {0, 0, -1}), tiny, {});
+    ASSERT_TRUE(hit) << "a triangle with millimetre edges is still a triangle: no fixed epsilon on the determinant";
+    EXPECT_NEAR(hit->t, 1.0, 1e-12);
+    EXPECT_NEAR(hit->uv.x, 0.2, 1e-12);
+    EXPECT_NEAR(hit->uv.y, 0.2, 1e-12);
+    EXPECT_TRUE(near(hit->normal, {0, 0, 1}));
+    // (6e-4, 3e-4): b1 = 0.6, b2 = 0.6, b1 + b2 > 1: beyond the hypotenuse.
+    EXPECT_FALSE(intersect_triangle(make_ray({6e-4, 3e-4, 1}, {0, 0, -1}), tiny, {}));
+}
+
 TEST(IntersectTriangle, ParallelRayAndTriangleBehindAreMissed) {
     EXPECT_FALSE(intersect_triangle(make_ray({1.5, 1, -5}, {0, 0, 1}), kTriangle, {}))
         << "a ray inside the triangle's plane has no single hit";

@@ -83,3 +83,50 @@ TEST(IsLit, EveryPointOfASphereFacingTheLightIsLit) {
     EXPECT_EQ(shadowed, 0) << "of " << tested << " points facing the light, " << shadowed
                            << " were in shadow: the feeler found the sphere it starts on (shadow acne)";
 }
+
+TEST(IsLit, AThinBlockerAHairAboveTheSurfaceCastsAContactShadow) {
+    // A triangle with millimetre edges lies flat 5e-5 above the floor, right over the point: the feeler
+    // from the point meets it at t = 5e-5. A feeler that starts a visible distance (1e-4) along L skips it.
+    EXPECT_FALSE(lit_with(Triangle{{-5e-4, 5e-5, -5e-4}, {5e-4, 5e-5, -5e-4}, {0, 5e-5, 5e-4}}))
+        << "start the feeler with spawn_ray: a tiny offset off the surface, not a fixed step along the ray";
+    // A sphere of radius 2e-5 around height 4e-5 (from 2e-5 to 6e-5) blocks it too.
+    EXPECT_FALSE(lit_with(Sphere{Point3(0, 4e-5, 0), 2e-5})) << "a speck of dust on the surface still casts a shadow";
+}
+
+TEST(IsLit, SmoothSurfaceSeesALightAboveItsTrueSurface) {
+    // A flat triangle in z = 0 with vertex normals leaning 30 degrees towards +x (shading normal
+    // (sin 30, 0, cos 30), geometric normal +z). A light at direction_at(-70) is above the true surface and
+    // nothing is in the way: lit, though it is 100 degrees from the shading normal. The feeler must leave
+    // on the geometric normal's side, or it finds the triangle it starts on.
+    const PointLight light{4.0 * direction_at(-70.0), Color(1.0)};
+    const Scene scene = smooth_floor_scene(direction_at(30.0), {}, diffuse_material(Color(1.0)), {light});
+    const TestTracer t(scene, 2);
+    EXPECT_TRUE(is_lit(t.tracer, smooth_floor_hit(scene), light))
+        << "the feeler found the smooth triangle it starts on: spawn_ray must use hit.geometric_normal";
+}
+
+TEST(IsLit, SceneTenMillionFromTheOriginKeepsItsShadows) {
+    // A tilted plane through P = (1e7, -1e7, 1e7) with unit normal n; hit points from eye rays near P are
+    // off the plane by rounding errors of about 1e-9. The light is 100 along n, a sphere of radius 2 sits
+    // 50 along n: the feeler from every point within 0.3 of P passes it within 0.3 of its centre (shadow);
+    // without the sphere nothing but the plane the point lies on is there (lit).
+    const Point3 p(1e7, -1e7, 1e7);
+    const Vec3 n = glm::normalize(Vec3(0.1, 1.0, 0.3));
+    const Plane plane{p, n};
+    const PointLight light{p + 100.0 * n, Color(1.0)};
+    const Scene open = scene_of({plane}, diffuse_material(Color(1.0)), {light});
+    const Scene blocked = scene_of({plane, Sphere{p + 50.0 * n, 2.0}}, diffuse_material(Color(1.0)), {light});
+    const TestTracer a(open, 2), b(blocked, 2);
+    const Vec3 u = glm::normalize(glm::cross(n, Vec3(1, 0, 0))), v = glm::cross(n, u);
+    int wrong = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Point3 target = p + 0.2 * std::sin(i * 0.7) * u + 0.2 * std::cos(i * 1.3) * v;
+        const Vec3 d = glm::normalize(-n + 0.3 * std::sin(i * 0.9) * u);
+        const auto hit = intersect_plane(Ray{target - 20.0 * d, d}, plane, Interval{});
+        ASSERT_TRUE(hit.has_value());
+        if (!is_lit(a.tracer, *hit, light)) ++wrong;
+        if (is_lit(b.tracer, *hit, light)) ++wrong;
+    }
+    EXPECT_EQ(wrong, 0) << "of 200 points 1e7 from the origin, " << wrong
+                        << " answers were wrong (self-shadowed without the sphere, or lit through it)";
+}

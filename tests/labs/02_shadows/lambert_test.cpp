@@ -78,6 +78,31 @@ TEST(Lambert, ShadowedLightGivesNothingWhileTheOtherStillShines) {
     EXPECT_TRUE(near(c, 0.5 * kKd, 1e-12)) << "only lights that is_lit() says reach the point count";
 }
 
+TEST(Lambert, LightsBehindTheSurfaceGetNoShadowFeeler) {
+    // Lights at 0, 120 and -100 degrees from the normal: only the first faces the point (n . L = 1 > 0), so
+    // lambert() gives kd and casts one shadow feeler (tracer statistics count it): the other two lights give
+    // nothing whatever a feeler would say, and need none.
+    const Scene scene = scene_of({floor_z0()}, kMaterial,
+                                 {{3.0 * kUp, Color(1.0)}, {3.0 * direction_at(120.0), Color(1.0)},
+                                  {3.0 * direction_at(-100.0), Color(1.0)}});
+    const TestTracer t(scene, 2);
+    EXPECT_TRUE(near(lambert(t.tracer, kOrigin), kKd, 1e-12));
+    EXPECT_EQ(t.stats.shadow, 1u) << "test n . L > 0 first: lights behind the surface (n . L <= 0) get no feeler";
+}
+
+TEST(Lambert, SmoothSurfaceIsShadedWithItsShadingNormal) {
+    // A flat triangle in z = 0 whose vertex normals lean 30 degrees towards +x: hit.normal = n =
+    // (sin 30, 0, cos 30), hit.geometric_normal = +z. A tinted light (0.8, 0.6, 0.4) straight above: n . L = cos 30,
+    // so (0.8, 0.6, 0.4) x kd x cos 30. A white light at direction_at(-70) is above the flat triangle but
+    // 100 degrees from n: n . L < 0, nothing. (The geometric normal would give kd x (0.8, 0.6, 0.4) + kd cos 70.)
+    const Scene scene = smooth_floor_scene(direction_at(30.0), {}, kMaterial,
+                                           {{3.0 * kUp, Color(0.8, 0.6, 0.4)}, {4.0 * direction_at(-70.0), Color(1.0)}});
+    const TestTracer t(scene, 2);
+    const Color c = lambert(t.tracer, smooth_floor_hit(scene));
+    EXPECT_TRUE(near(c, Color(0.8, 0.6, 0.4) * kKd * std::cos(radians(30.0)), 1e-12))
+        << "n . L uses hit.normal, the shading normal (hit.geometric_normal is for offsetting rays)";
+}
+
 TEST(Lambert, CheckerboardReplacesTheDiffuseColour) {
     // Checker cubes of side 1: (0.5, 0.5, 0) is in cube (0, 0, 0), colour a; (1.5, 0.5, 0) in cube
     // (1, 0, 0), colour b. Each point has a white light straight above it: Kd x colour_at(p).

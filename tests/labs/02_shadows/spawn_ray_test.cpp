@@ -4,12 +4,14 @@
 #include "test_helpers.hpp"
 #include "whitted/labs.hpp"
 
+#include "lab_helpers.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace whitted;
-using whitted::testing_helpers::near;
+using namespace whitted::testing_helpers;
 
 namespace {
 
@@ -44,6 +46,24 @@ TEST(SpawnRay, RayIntoTheSurfaceStartsJustBelowIt) {
     EXPECT_LT(glm::length(ray.origin - hit.point), 1e-5 * 4.0);
 }
 
+
+TEST(SpawnRay, SmoothSurfacesAreLeftOnTheSideOfTheGeometricNormal) {
+    // A flat triangle in z = 0 whose vertex normals lean 30 degrees towards +x, hit straight from above:
+    // hit.normal = (sin 30, 0, cos 30), hit.geometric_normal = +z. direction_at(-70) leaves above the true
+    // surface (its z is cos 70 > 0) though it makes 100 degrees with the shading normal; direction_at(95)
+    // goes under it (z = cos 95 < 0) though it makes only 65 degrees with the shading normal. Only the
+    // geometric normal tells which side of the real surface a ray leaves towards.
+    const Scene scene = smooth_floor_scene(direction_at(30.0), {}, diffuse_material(Color(1.0)), {});
+    const Hit hit = smooth_floor_hit(scene);
+    ASSERT_TRUE(near(hit.normal, direction_at(30.0), 1e-12)) << "the framework interpolates the vertex normals";
+    ASSERT_TRUE(near(hit.geometric_normal, kUp, 0.0));
+    const Ray leaving = spawn_ray(hit, direction_at(-70.0));
+    EXPECT_GT(leaving.origin.z, 0.0) << "offset along hit.geometric_normal, to the side the ray leaves towards";
+    EXPECT_FALSE(scene.closest_hit(leaving)) << "the ray leaving above the triangle must not find it";
+    const Ray entering = spawn_ray(hit, direction_at(95.0));
+    EXPECT_LT(entering.origin.z, 0.0) << "the ray goes under the true surface: start it below the triangle";
+    EXPECT_FALSE(scene.closest_hit(entering)) << "the ray going under the triangle must not find it";
+}
 
 TEST(SpawnRay, GrazingRaysLeavingASphereDoNotHitItAgain) {
     // Shadow feelers that leave a sphere almost tangentially (89.99 degrees from

@@ -74,7 +74,9 @@ TEST(BlinnPhong, HighlightFollowsTheHalfwayVectorAtSeveralAngles) {
 
 TEST(BlinnPhong, ExponentSharpensTheHighlight) {
     // Light at 60 degrees, eye overhead: h . n = cos 30. Exponent 1 gives ks cos 30, exponent 100 ks cos^100 30.
-    for (const double shininess : {1.0, 100.0}) {
+    // Exponents need not be whole numbers (the SPD scenes use 3.0827): cos^3.0827 30 = 0.6419..., not
+    // cos^3 30 = 0.6495... (an int exponent) nor cos^4 30 = 0.5625 (a loop that multiplies until it passes 3.0827).
+    for (const double shininess : {1.0, 3.0827, 100.0}) {
         const Color c = shade({{2.0 * direction_at(60.0), Color(1.0)}}, kUp, material(shininess));
         EXPECT_TRUE(near(c, kAmbient * kKd + 0.5 * kKd + kKs * std::pow(cos_deg(30.0), shininess), 1e-12))
             << "shininess " << shininess << ": the highlight is (h . n) raised to the material's shininess";
@@ -95,6 +97,44 @@ TEST(BlinnPhong, LightInShadowGivesNeitherDiffuseNorHighlight) {
                           {Sphere{1.5 * direction_at(45.0), 0.3}});
     EXPECT_TRUE(near(c, kAmbient * kKd, 1e-12))
         << "a shadowed light adds nothing, not even a highlight: only the ambient term is left";
+}
+
+TEST(BlinnPhong, AShadowedFirstLightDoesNotDarkenTheSecond) {
+    // The shadowed light of the test above comes first; a tinted light (0.5, 1, 0.25) at -45 degrees comes
+    // second, with the eye at 45: the mirror configuration again (h = n), so the second light adds
+    // (0.5, 1, 0.25) x (kd cos 45 + ks), and the first nothing.
+    const Color tint(0.5, 1.0, 0.25);
+    const Color c = shade({{3.0 * direction_at(45.0), Color(1.0)}, {3.0 * direction_at(-45.0), tint}}, direction_at(45.0),
+                          material(), {Sphere{1.5 * direction_at(45.0), 0.3}});
+    EXPECT_TRUE(near(c, kAmbient * kKd + tint * (kKd * cos_deg(45.0) + kKs), 1e-12))
+        << "a light in shadow is skipped (continue), the lights after it still count, each with its own feeler";
+}
+
+TEST(BlinnPhong, CheckerboardColoursTheAmbientTerm) {
+    // No lights: only Ia kd, with kd = Kd x colour_at(p). Checker cubes of side 1: (0.5, 0.5, 0) is in cube
+    // (0, 0, 0), colour a = (1, 0.5, 0); (1.5, 0.5, 0) in cube (1, 0, 0), colour b = (0, 0.5, 1). Kd = 0.8:
+    // Ia kd = (0.2, 0.3, 0.4) x 0.8 x (1, 0.5, 0) = (0.16, 0.12, 0) and (0.2, 0.3, 0.4) x 0.8 x (0, 0.5, 1) = (0, 0.12, 0.32).
+    Material checkered = material();
+    checkered.checker = Checker{Color(1.0, 0.5, 0.0), Color(0.0, 0.5, 1.0), 1.0};
+    const Scene scene = scene_of({floor_z0()}, checkered, {}, kAmbient);
+    const TestTracer t(scene, 3);
+    EXPECT_TRUE(near(blinn_phong(t.tracer, surface_hit({0.5, 0.5, 0}, kUp), kUp), {0.16, 0.12, 0.0}, 1e-12))
+        << "the ambient term is Ia x Kd x colour_at(hit.point): the checker colour, not material.color";
+    EXPECT_TRUE(near(blinn_phong(t.tracer, surface_hit({1.5, 0.5, 0}, kUp), kUp), {0.0, 0.12, 0.32}, 1e-12))
+        << "the ambient term is Ia x Kd x colour_at(hit.point): the checker colour, not material.color";
+}
+
+TEST(BlinnPhong, SmoothSurfaceHighlightFollowsTheShadingNormal) {
+    // A flat triangle in z = 0 whose vertex normals lean 30 degrees towards +x: hit.normal = n = direction_at(30),
+    // hit.geometric_normal = +z. The eye ray comes straight down (wo = +z); a tinted light (1, 0.8, 0.6) at
+    // direction_at(60). L and wo lie 30 degrees either side of n, so n . L = cos 30 and h = normalize(L + wo) = n:
+    // the full highlight ks, whatever the exponent (3.0827 here). The geometric normal would give cos 60 and
+    // cos^3.0827 30 instead.
+    const Color tint(1.0, 0.8, 0.6);
+    const Scene scene = smooth_floor_scene(direction_at(30.0), {}, material(3.0827), {{3.0 * direction_at(60.0), tint}}, kAmbient);
+    const Color c = trace_one(scene, ray_down_to(), 3);
+    EXPECT_TRUE(near(c, kAmbient * kKd + tint * (kKd * cos_deg(30.0) + kKs), 1e-12))
+        << "shade with hit.normal, the shading normal, for n . L and for h . n";
 }
 
 TEST(BlinnPhong, LightBehindTheSurfaceGivesNoHighlight) {

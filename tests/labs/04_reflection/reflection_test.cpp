@@ -18,6 +18,20 @@ namespace {
 // With ambient light 1 and no lights, a Kd = 1 surface shows exactly its colour.
 Material lamp(Color color) { return diffuse_material(color); }
 
+/// Two facing mirrors z = 0 and z = 1, each showing its own colour C = (0.2, 0.4, 0.6) (ambient 1, Kd = 1,
+/// no lights) plus a mirror term Ks = ks of colour `specular_color`.
+SceneData facing_mirrors(double ks, Color specular_color = Color(1.0)) {
+    SceneData data;
+    data.ambient = Color(1.0);
+    Material m = lamp(Color(0.2, 0.4, 0.6));
+    m.specular = ks;
+    m.specular_color = specular_color;
+    data.materials = {m};
+    data.primitives.push_back({Plane{Point3(0.0), kUp}, 0});
+    data.primitives.push_back({Plane{Point3(0.0, 0.0, 1.0), -kUp}, 0});
+    return data;
+}
+
 } // namespace
 
 TEST(Reflection, WeightIsKsTimesTheSpecularColour) {
@@ -60,15 +74,7 @@ TEST(Reflection, FacingMirrorsCastOneReflectedRayPerLevelBelowMaxDepth) {
     // (Path weights stay above min_weight = 1/1024 here: only max_depth stops the rays.)
     for (int max_depth = 1; max_depth <= 6; ++max_depth) {
         SCOPED_TRACE(::testing::Message() << "max_depth " << max_depth);
-        SceneData data;
-        data.ambient = Color(1.0);
-        Material m = lamp(Color(0.2, 0.4, 0.6));
-        m.specular = 0.5;
-        m.specular_color = Color(1.0, 0.5, 0.0);
-        data.materials = {m};
-        data.primitives.push_back({Plane{Point3(0.0), kUp}, 0});
-        data.primitives.push_back({Plane{Point3(0.0, 0.0, 1.0), -kUp}, 0});
-        TracerRig rig(std::move(data), 4, max_depth, 1.0 / 1024.0);
+        TracerRig rig(facing_mirrors(0.5, Color(1.0, 0.5, 0.0)), 4, max_depth, 1.0 / 1024.0);
         const Color seen = rig.trace(make_ray(Point3(0.0, 0.0, 0.5), Vec3(0.6, 0.0, -0.8)));
         EXPECT_EQ(rig.stats.reflected, static_cast<std::uint64_t>(max_depth - 1))
             << "each reflected ray must be traced at depth + 1 as RayKind::reflected";
@@ -80,18 +86,23 @@ TEST(Reflection, FacingMirrorsCastOneReflectedRayPerLevelBelowMaxDepth) {
     }
 }
 
+TEST(Reflection, WeakReflectionsAreCutOffByTheAdaptiveDepthControl) {
+    // The facing mirrors with a white Ks = 0.1, max_depth 10, min_weight 1/1024 = 0.000977: the k-th
+    // reflected ray carries the path weight 0.1^k. 0.1, 0.01 and 0.001 are traced; 0.0001 is too weak to
+    // change the pixel and is not (ray statistics count 3 reflected rays). The colour is C (1 + 0.1 + 0.01
+    // + 0.001). The tracer only knows a ray's weight if reflection() passes Ks x specular colour to trace():
+    // tracing with weight 1 and multiplying the colour by Ks afterwards traces every level down to max_depth.
+    TracerRig rig(facing_mirrors(0.1), 4, 10, 1.0 / 1024.0);
+    const Color seen = rig.trace(make_ray(Point3(0.0, 0.0, 0.5), Vec3(0.6, 0.0, -0.8)));
+    EXPECT_EQ(rig.stats.reflected, 3u) << "pass the weight Ks x specular colour to trace(), do not multiply afterwards";
+    EXPECT_TRUE(near(seen, 1.111 * Color(0.2, 0.4, 0.6), 1e-12));
+}
+
 TEST(Reflection, IsTracedOneLevelDeeperThanTheHit) {
     // The same facing mirrors, max_depth 4. Called for a hit at depth 3, reflection()
     // traces at depth 4 = max_depth: that ray hits the other mirror and stops there
     // (one reflected ray, colour w C). Called at depth 2 it goes one level further.
-    SceneData data;
-    data.ambient = Color(1.0);
-    Material m = lamp(Color(0.2, 0.4, 0.6));
-    m.specular = 0.5;
-    data.materials = {m};
-    data.primitives.push_back({Plane{Point3(0.0), kUp}, 0});
-    data.primitives.push_back({Plane{Point3(0.0, 0.0, 1.0), -kUp}, 0});
-    TracerRig rig(std::move(data), 4, 4, 1.0 / 1024.0);
+    TracerRig rig(facing_mirrors(0.5), 4, 4, 1.0 / 1024.0);
     const Vec3 wo = direction_at(20.0);
     const Color last = reflection(rig.tracer, hit_seen_from(Point3(0.0), kUp, wo), wo, 3);
     EXPECT_EQ(rig.stats.reflected, 1u) << "reflection() at depth 3 must trace its ray at depth 4 (= max_depth)";

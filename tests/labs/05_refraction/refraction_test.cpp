@@ -23,18 +23,38 @@ Primitive slab(std::uint32_t material) {
 } // namespace
 
 TEST(Refraction, WeightIsTheTransmittance) {
-    // A glass surface (T = 0.6, Ks = 0) with nothing behind it: the refracted ray
-    // sees the background (1, 0.5, 0.25), so refraction() returns 0.6 x background.
-    SceneData data;
-    data.background = Color(1.0, 0.5, 0.25);
-    data.materials = {glass_material(1.5, 0.6)};
-    data.primitives.push_back({Plane{Point3(0.0), kUp}, 0});
-    TracerRig rig(std::move(data), 5, 5);
-    const Vec3 wo = direction_at(30.0);
-    const Color c = refraction(rig.tracer, hit_seen_from(Point3(0.0), kUp, wo), wo, 1);
-    EXPECT_TRUE(near(c, Color(0.6, 0.3, 0.15), 1e-12)) << "expected T * (colour seen through the surface)";
-    EXPECT_EQ(rig.stats.refracted, 1u) << "one ray, traced as RayKind::refracted";
-    EXPECT_EQ(rig.stats.reflected, 0u);
+    // A glass surface (T = 0.6) with nothing behind it: the refracted ray sees the
+    // background (1, 0.5, 0.25), so refraction() returns 0.6 x background. The same
+    // glass with a highlight (Ks = 0.3, specular colour (1, 0.5, 0.25)) transmits the
+    // same: the mirror term is reflection()'s, refraction() weights its ray by T alone.
+    Material shiny_glass = glass_material(1.5, 0.6);
+    shiny_glass.specular = 0.3;
+    shiny_glass.specular_color = Color(1.0, 0.5, 0.25);
+    for (const Material& glass : {glass_material(1.5, 0.6), shiny_glass}) {
+        SCOPED_TRACE(::testing::Message() << "Ks = " << glass.specular);
+        SceneData data;
+        data.background = Color(1.0, 0.5, 0.25);
+        data.materials = {glass};
+        data.primitives.push_back({Plane{Point3(0.0), kUp}, 0});
+        TracerRig rig(std::move(data), 5, 5);
+        const Vec3 wo = direction_at(30.0);
+        const Color c = refraction(rig.tracer, hit_seen_from(Point3(0.0), kUp, wo), wo, 1);
+        EXPECT_TRUE(near(c, Color(0.6, 0.3, 0.15), 1e-12)) << "expected T * (colour seen through the surface)";
+        EXPECT_EQ(rig.stats.refracted, 1u) << "one ray, traced as RayKind::refracted";
+        EXPECT_EQ(rig.stats.reflected, 0u);
+    }
+}
+
+TEST(Refraction, WeakTransmissionIsCutOffByTheAdaptiveDepthControl) {
+    // Eight sheets of glass of index 1 (no bending) with T = 0.1, crossed straight down; max_depth 10,
+    // min_weight 1/1024 = 0.000977. The k-th refracted ray carries the path weight 0.1^k: 0.1, 0.01 and
+    // 0.001 are traced, 0.0001 is too weak to change the pixel and is not (3 refracted rays). The third
+    // stops on the fourth sheet, black itself (Kd = 0): the pixel is black. The tracer only knows a ray's
+    // weight if refraction() passes T to trace(); weight 1 and the colour times T afterwards crosses all 8.
+    TracerRig rig(glass_sheets(8, 1.0, 0.1), 5, 10, 1.0 / 1024.0);
+    const Color c = rig.trace(Ray{Point3(0.0, 0.0, 1.0), -kUp});
+    EXPECT_EQ(rig.stats.refracted, 3u) << "pass the weight T to trace(), do not multiply afterwards";
+    EXPECT_TRUE(near(c, Color(0.0), 0.0));
 }
 
 TEST(Refraction, ASlabShiftsTheRayWhichLeavesParallelToHowItEntered) {

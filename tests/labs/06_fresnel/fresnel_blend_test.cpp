@@ -31,14 +31,35 @@ SceneData lamps_around_glass(double transmittance, double ior) {
 TEST(FresnelBlend, WeightsTheReflectedRayKrAndTheRefractedOneOneMinusKrTimesT) {
     // From air at 45 degrees onto glass with T = 0.5: Kr = 0.050240. The reflected
     // ray sees red, the refracted one blue: (Kr, 0, (1 - Kr) T) = (0.050240, 0, 0.474880).
-    TracerRig rig(lamps_around_glass(0.5, 1.5), 6, 5);
-    const Vec3 wo = direction_at(45.0);
-    const Color c = fresnel_blend(rig.tracer, hit_seen_from(Point3(0.0), kUp, wo), wo, 1);
-    ASSERT_TRUE(is_finite(c)) << "NaN or infinity in (" << c.x << ", " << c.y << ", " << c.z << ")";
-    EXPECT_NEAR(c.x, 0.050240, 1e-6) << "the reflected ray's weight must be Kr";
-    EXPECT_NEAR(c.z, (1.0 - 0.050240) * 0.5, 1e-6) << "the refracted ray's weight must be (1 - Kr) T";
-    EXPECT_EQ(rig.stats.reflected, 1u);
-    EXPECT_EQ(rig.stats.refracted, 1u);
+    // The same glass with a highlight (Ks = 0.5, specular colour (0.5, 1, 0.25)) blends
+    // the same: for a dielectric Kr replaces Ks x specular colour as the mirror weight.
+    for (const double ks : {0.0, 0.5}) {
+        SCOPED_TRACE(::testing::Message() << "Ks = " << ks);
+        SceneData data = lamps_around_glass(0.5, 1.5);
+        data.materials[0].specular = ks;
+        data.materials[0].specular_color = Color(0.5, 1.0, 0.25);
+        TracerRig rig(std::move(data), 6, 5);
+        const Vec3 wo = direction_at(45.0);
+        const Color c = fresnel_blend(rig.tracer, hit_seen_from(Point3(0.0), kUp, wo), wo, 1);
+        ASSERT_TRUE(is_finite(c)) << "NaN or infinity in (" << c.x << ", " << c.y << ", " << c.z << ")";
+        EXPECT_NEAR(c.x, 0.050240, 1e-6) << "the reflected ray's weight must be Kr";
+        EXPECT_NEAR(c.z, (1.0 - 0.050240) * 0.5, 1e-6) << "the refracted ray's weight must be (1 - Kr) T";
+        EXPECT_EQ(rig.stats.reflected, 1u);
+        EXPECT_EQ(rig.stats.refracted, 1u);
+    }
+}
+
+TEST(FresnelBlend, WeakRaysAreCutOffByTheAdaptiveDepthControl) {
+    // Eight sheets of glass of index 1 with T = 0.1, crossed straight down; max_depth 10, min_weight 1/1024.
+    // Equal indices reflect nothing (Kr = 0): the reflected rays' weight 0 is too weak to trace, and the
+    // k-th refracted ray carries (1 - 0) 0.1^k: 0.1, 0.01, 0.001 are traced, 0.0001 < 0.000977 is not.
+    // So 0 reflected and 3 refracted rays, and a black pixel (the fourth sheet is black itself, Kd = 0).
+    // The tracer only knows the weights if fresnel_blend() passes Kr and (1 - Kr) T to trace().
+    TracerRig rig(glass_sheets(8, 1.0, 0.1), 6, 10, 1.0 / 1024.0);
+    const Color c = rig.trace(Ray{Point3(0.0, 0.0, 1.0), -kUp});
+    EXPECT_EQ(rig.stats.reflected, 0u) << "pass the weight Kr to trace(), do not multiply afterwards";
+    EXPECT_EQ(rig.stats.refracted, 3u) << "pass the weight (1 - Kr) T to trace(), do not multiply afterwards";
+    EXPECT_TRUE(near(c, Color(0.0), 0.0));
 }
 
 TEST(FresnelBlend, WithFullTransmittanceTheWeightsAddUpToOne) {
