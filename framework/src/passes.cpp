@@ -121,7 +121,7 @@ Color pass_pixel(Pass pass, const Scene& scene, const RenderSettings& settings, 
     case Pass::fresnel: return fresnel_pixel(scene, eye);
     case Pass::object_id: {
         const Primitive& primitive = scene.primitives()[hit.primitive];
-        return id_color(primitive.line > 0 ? primitive.line : (1u << 24) + primitive.id);
+        return id_color(primitive.line > 0 ? primitive.line : (1u << 24) + primitive.index);
     }
     default: return kBackground;
     }

@@ -18,7 +18,7 @@ std::optional<Hit> intersect(const Ray& ray, const Primitive& primitive, Interva
         },
         primitive.shape);
     if (hit) {
-        hit->primitive = primitive.id;
+        hit->primitive = primitive.index;
         hit->material = primitive.material;
     }
     return hit;

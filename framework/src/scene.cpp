@@ -72,7 +72,7 @@ Scene::Scene(SceneData data, const LeafKernels* kernels)
         data_.primitives.push_back(std::move(unbounded[i]));
         source_index_.push_back(unbounded_index[i]);
     }
-    for (std::size_t i = 0; i < data_.primitives.size(); ++i) data_.primitives[i].id = static_cast<std::uint32_t>(i);
+    for (std::size_t i = 0; i < data_.primitives.size(); ++i) data_.primitives[i].index = static_cast<std::uint32_t>(i);
 }
 
 std::size_t Scene::acceleration_bytes() const { return bvh_->bytes(); }

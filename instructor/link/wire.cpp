@@ -78,7 +78,7 @@ void Writer::put(const Shape& shape) {
         shape);
 }
 void Writer::put(const Primitive& p) {
-    put(p.shape), put(p.material), raw(p.vertex_normals), put(p.id), put(p.line);
+    put(p.shape), put(p.material), raw(p.vertex_normals), put(p.index), put(p.line);
 }
 void Writer::put(const Material& m) {
     put(m.color), put(m.diffuse), put(m.specular_color), put(m.specular), put(m.shininess);
@@ -198,7 +198,7 @@ template <> Primitive Reader::get<Primitive>() {
     p.shape = get<Shape>();
     p.material = get<std::uint32_t>();
     p.vertex_normals = raw<std::int32_t>();
-    p.id = get<std::uint32_t>();
+    p.index = get<std::uint32_t>();
     p.line = get<std::uint32_t>();
     return p;
 }

@@ -2,7 +2,8 @@
 # Proves that the lab tests test something (instructors and CI):
 #   - the reference solution passes every test (make test does this too);
 #   - every untouched stub fails every test of its own lab, and only of labs that use it;
-#   - every catalogued mistake in instructor/tests/mistakes/ is caught by its lab's tests.
+#   - every catalogued mistake in instructor/tests/mistakes/ is caught by its lab's tests,
+#     and by its public tests alone (a hidden-only catch is a gap in what students can run).
 # Builds in build-proofs/ with -DWHITTED_PROOFS=ON; prints "mistakes caught: N/N".
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -14,7 +15,7 @@ cmake --build "$build" -j"$jobs" > "$build.log" 2>&1 || { tail -40 "$build.log";
 
 cd "$build"
 status=0
-ctest -j"$jobs" -L 'stub|independence|mistake' --output-junit proofs.xml > proofs.log 2>&1 || status=1
+ctest -j"$jobs" -L 'stub|independence|mistake|mistake_public' --output-junit proofs.xml > proofs.log 2>&1 || status=1
 count() { grep -cE "$1" proofs.log || true; }
 stub_total=$(count 'Test +#[0-9]+: stub\.')
 stub_failed=$(grep -E 'Test +#[0-9]+: stub\.' proofs.log | grep -cv ' Passed ' || true)
@@ -23,6 +24,9 @@ indep_failed=$(grep -E 'Test +#[0-9]+: independence\.' proofs.log | grep -cv ' P
 mistakes_total=$(count 'Test +#[0-9]+: mistake\.')
 mistakes_missed=$(grep -E 'Test +#[0-9]+: mistake\.' proofs.log | grep -v ' Passed ' | sed -E 's/.*: (mistake\.[^ ]+).*/\1/' || true)
 mistakes_caught=$((mistakes_total - $(printf '%s' "$mistakes_missed" | grep -c . || true)))
+public_total=$(count 'Test +#[0-9]+: mistake_public\.')
+public_missed=$(grep -E 'Test +#[0-9]+: mistake_public\.' proofs.log | grep -v ' Passed ' | sed -E 's/.*: (mistake_public\.[^ ]+).*/\1/' || true)
+public_caught=$((public_total - $(printf '%s' "$public_missed" | grep -c . || true)))
 
 echo "stub tests that fail as they must: $((stub_total - stub_failed))/$stub_total"
 echo "labs unaffected by later stubs: $((indep_total - indep_failed))/$indep_total"
@@ -30,6 +34,11 @@ echo "mistakes caught: $mistakes_caught/$mistakes_total"
 if [ -n "$mistakes_missed" ]; then
     echo "not caught:"
     printf '  %s\n' $mistakes_missed
+fi
+echo "mistakes caught by the public tests alone: $public_caught/$public_total"
+if [ -n "$public_missed" ]; then
+    echo "caught only by hidden tests (add a public test that catches each):"
+    printf '  %s\n' $public_missed
 fi
 if [ "$status" -ne 0 ]; then
     grep -E '\*\*\*|Failed' proofs.log | head -40

@@ -38,7 +38,7 @@ std::string object_name(const TraceContext& context, std::uint32_t primitive) {
             else return "cone";
         },
         p.shape);
-    if (p.line == 0) return std::string(shape) + " #" + std::to_string(p.id);
+    if (p.line == 0) return std::string(shape) + " #" + std::to_string(p.index);
     return std::string(shape) + " (" + std::filesystem::path(context.scene_path).filename().string() + ":" +
            std::to_string(p.line) + ")";
 }

@@ -22,7 +22,7 @@ struct Primitive {
     Shape shape;
     std::uint32_t material = 0;       // index into the scene's materials
     std::int32_t vertex_normals = -1; // triangles from NFF `pp`: index into the scene's vertex normals
-    std::uint32_t id = 0;             // own index in the built scene (set by Scene)
+    std::uint32_t index = 0;          // own index in the built scene (set by Scene; a hit on it has hit.primitive == index)
     std::uint32_t line = 0;           // line of the scene file that made it (0: made by code)
 };
 

@@ -42,16 +42,16 @@ TEST(ClosestHit, PicksTheNearestWhateverTheOrder) {
         {Sphere{{4, 0, 0}, 1.0}, 0, -1, 1},
         {Sphere{{7, 0, 0}, 1.0}, 0, -1, 2},
     }};
-    std::sort(primitives.begin(), primitives.end(), [](const Primitive& a, const Primitive& b) { return a.id < b.id; });
+    std::sort(primitives.begin(), primitives.end(), [](const Primitive& a, const Primitive& b) { return a.index < b.index; });
     const Ray ray = make_ray({0, 0, 0}, {1, 0, 0});
     do {
         const auto nearest = closest_hit(ray, primitives, {});
         ASSERT_TRUE(nearest);
-        EXPECT_EQ(nearest->primitive, 1u) << "order " << primitives[0].id << primitives[1].id << primitives[2].id
+        EXPECT_EQ(nearest->primitive, 1u) << "order " << primitives[0].index << primitives[1].index << primitives[2].index
                                           << ": keep the hit with the smallest t, not the first or last one found";
         EXPECT_NEAR(nearest->t, 3.0, 1e-12);
     } while (std::next_permutation(primitives.begin(), primitives.end(),
-                                   [](const Primitive& a, const Primitive& b) { return a.id < b.id; }));
+                                   [](const Primitive& a, const Primitive& b) { return a.index < b.index; }));
 }
 
 TEST(ClosestHit, ANearTriangleHidesAFarPlaneAndSphere) {
