@@ -2,6 +2,7 @@
 
 #include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/engine/remote_queries.hpp"
+#include "whitted/engine/vertex_normals.hpp"
 #include "whitted/engine/wide_bvh.hpp"
 #include "whitted/labs.hpp"
 
@@ -11,12 +12,20 @@
 namespace whitted {
 namespace {
 
+std::uint64_t next_serial() {
+    // Only an identity for scenes: the one counter the framework shares between threads.
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+}
+
+} // namespace
+
 // Interpolates a pp triangle's vertex normals at the hit's barycentric coordinates.
 // The result is kept only when it honours what the labs rely on: it faces the
 // incoming ray, and the mirror direction about it leaves on the ray's side of
 // the true surface. Near silhouettes of coarse meshes neither need hold; there
 // the geometric normal is used.
-void interpolate_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& normals) {
+void apply_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& normals) {
     const double b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
     Vec3 n = b0 * normals[0] + b1 * normals[1] + b2 * normals[2];
     const double length = glm::length(n);
@@ -30,14 +39,6 @@ void interpolate_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& n
     if (cos_theta <= 0.0 || glm::dot(mirrored, hit.geometric_normal) <= 0.0) return;
     hit.normal = n;
 }
-
-std::uint64_t next_serial() {
-    // Only an identity for scenes: the one counter the framework shares between threads.
-    static std::atomic<std::uint64_t> counter{0};
-    return ++counter;
-}
-
-} // namespace
 
 [[gnu::weak]] const RemoteSceneQueries* remote_scene_queries() { return nullptr; }
 
@@ -85,7 +86,7 @@ SceneData Scene::source_data() const {
 
 void Scene::apply_vertex_normals(Hit& hit, const Ray& ray) const {
     const Primitive& primitive = data_.primitives[hit.primitive];
-    if (primitive.vertex_normals >= 0) interpolate_vertex_normals(hit, ray, data_.vertex_normals[primitive.vertex_normals]);
+    if (primitive.vertex_normals >= 0) whitted::apply_vertex_normals(hit, ray, data_.vertex_normals[primitive.vertex_normals]);
 }
 
 std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {

@@ -9,6 +9,8 @@
 // harness shoots whitted's ray tree, not a float approximation of it.
 #include "embree_scene.hpp"
 
+#include "whitted/engine/vertex_normals.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -110,22 +112,6 @@ void set_ray(RTCRay& r, const Ray& ray, float t_far) {
     r.mask = 0xFFFFFFFFu;
     r.id = 0;
     r.flags = 0;
-}
-
-// Interpolates a pp triangle's vertex normals, keeping them only where the labs'
-// assumptions hold, exactly as Scene::closest_hit does (scene.cpp).
-void apply_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& normals) {
-    const double b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
-    Vec3 n = b0 * normals[0] + b1 * normals[1] + b2 * normals[2];
-    const double length = glm::length(n);
-    if (!(length > 0.0)) return;
-    n /= length;
-    if (glm::dot(n, hit.geometric_normal) < 0.0) n = -n;
-    const Vec3 wo = -ray.direction;
-    const double cos_theta = glm::dot(wo, n);
-    const Vec3 mirrored = 2.0 * cos_theta * n - wo;
-    if (cos_theta <= 0.0 || glm::dot(mirrored, hit.geometric_normal) <= 0.0) return;
-    hit.normal = n;
 }
 
 } // namespace

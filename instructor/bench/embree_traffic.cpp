@@ -7,6 +7,8 @@
 // files stay out of the student handout (instructor/scripts/export-handout.sh).
 #include "embree_traffic.hpp"
 
+#include "whitted/engine/tiles.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -25,8 +27,6 @@
 
 namespace whitted::bench {
 namespace {
-
-constexpr int kTileSize = 16; // as render.cpp
 
 // How far a new ray starts off the surface, relative to the size of the hit
 // point's coordinates, along the geometric normal to the side the ray leaves
@@ -150,58 +150,35 @@ void set_denormals_to_zero() {
 TrafficResult shoot_ray_traffic(const RayQueries& scene, const SceneData& data, int max_depth, int threads,
                                 bool eye_packets) {
     const Camera& camera = data.camera;
-    const int tiles_x = (camera.res_x + kTileSize - 1) / kTileSize;
-    const int tiles_y = (camera.res_y + kTileSize - 1) / kTileSize;
-    const int tile_count = tiles_x * tiles_y;
-    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    threads = std::max(1, std::min(threads, tile_count));
-
-    std::atomic<int> next_tile{0};
+    threads = tile_threads(camera.res_x, camera.res_y, threads);
     std::vector<RayCounts> counts(static_cast<std::size_t>(threads));
-    std::exception_ptr failure;
-    std::mutex failure_mutex;
-    auto worker = [&](int thread_index) {
-        try {
-            set_denormals_to_zero();
-            const TrafficTracer tracer(scene, data, max_depth, counts[static_cast<std::size_t>(thread_index)]);
-            for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {
-                const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-                const int x1 = std::min(x0 + kTileSize, camera.res_x), y1 = std::min(y0 + kTileSize, camera.res_y);
-                if (!eye_packets) {
-                    for (int row = y0; row < y1; ++row) {
-                        const int y = camera.res_y - 1 - row; // image rows go top-down, viewport y bottom-up
-                        for (int x = x0; x < x1; ++x) tracer.trace_pixel(x + 0.5, y + 0.5);
-                    }
-                    continue;
+    const auto start = std::chrono::steady_clock::now();
+    for_each_tile(camera.res_x, camera.res_y, threads, [&](int thread_index) -> TileFunction {
+        set_denormals_to_zero();
+        return [&, tracer = TrafficTracer(scene, data, max_depth, counts[static_cast<std::size_t>(thread_index)])](const Tile& tile) {
+            if (!eye_packets) {
+                for (int row = tile.y0; row < tile.y1; ++row) {
+                    const int y = camera.res_y - 1 - row; // image rows go top-down, viewport y bottom-up
+                    for (int x = tile.x0; x < tile.x1; ++x) tracer.trace_pixel(x + 0.5, y + 0.5);
                 }
-                for (int by = y0; by < y1; by += 4) {
-                    for (int bx = x0; bx < x1; bx += 4) {
-                        Ray rays[16];
-                        std::optional<Hit> hits[16];
-                        int count = 0;
-                        for (int row = by; row < std::min(by + 4, y1); ++row)
-                            for (int x = bx; x < std::min(bx + 4, x1); ++x)
-                                rays[count++] = tracer.eye_ray(x + 0.5, camera.res_y - 1 - row + 0.5);
-                        scene.closest_hits16(rays, count, hits);
-                        tracer.continue_eye_rays(rays, hits, count);
-                    }
+                return;
+            }
+            for (int by = tile.y0; by < tile.y1; by += 4) {
+                for (int bx = tile.x0; bx < tile.x1; bx += 4) {
+                    Ray rays[16];
+                    std::optional<Hit> hits[16];
+                    int count = 0;
+                    for (int row = by; row < std::min(by + 4, tile.y1); ++row)
+                        for (int x = bx; x < std::min(bx + 4, tile.x1); ++x)
+                            rays[count++] = tracer.eye_ray(x + 0.5, camera.res_y - 1 - row + 0.5);
+                    scene.closest_hits16(rays, count, hits);
+                    tracer.continue_eye_rays(rays, hits, count);
                 }
             }
-        } catch (...) {
-            std::lock_guard lock(failure_mutex);
-            if (!failure) failure = std::current_exception();
-            next_tile = tile_count;
-        }
-    };
-    const auto start = std::chrono::steady_clock::now();
-    {
-        std::vector<std::jthread> pool;
-        for (int i = 1; i < threads; ++i) pool.emplace_back(worker, i);
-        worker(0);
-    } // joins
+        };
+    });
     TrafficResult result;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (failure) std::rethrow_exception(failure);
     result.threads = threads;
     for (const RayCounts& c : counts) {
         result.rays.eye += c.eye;

@@ -35,7 +35,7 @@ endif()
 set(COMMAND ${CMAKE_COMMAND} -E env ${env} "${program}" ${args})
 set(EXPECT_EXIT ${expect_exit})
 set(EXPECT_OUTPUT "${expect}")
-include(${CMAKE_CURRENT_LIST_DIR}/../cli/expect.cmake) # runs COMMAND, checks the exit code and output; sets `all`
+include(${CMAKE_CURRENT_LIST_DIR}/../../../tests/cli/expect.cmake) # runs COMMAND, checks the exit code and output; sets `all`
 foreach(file results.md results.json chart.svg scenes/flake1.nff images/flake1.png)
   if(NOT EXISTS "${OUT}/results/${file}")
     message(FATAL_ERROR "whitted-bench did not write ${file}\noutput:\n${all}")
