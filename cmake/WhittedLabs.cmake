@@ -69,7 +69,7 @@ function(whitted_lab_object target file)
   target_compile_options(${target} PRIVATE -Wno-unused-parameter)
 endfunction()
 
-# whitted_lab_mix(OUT BASE [LAB SET]): the object libraries of all six labs from
+# whitted_lab_mix(OUT BASE [LAB SET]): the object libraries of every lab from
 # set BASE, except LAB, which comes from set SET (or the exact target SET_TARGET
 # when SET names an existing target).
 function(whitted_lab_mix out base)

@@ -3,7 +3,7 @@
 # check_<lab>: the lab's tests (public and hidden), the reference for every
 #   other lab, and remote_<lab>: the graded lab is answered by a worker.
 # check_integration: the whole-renderer tests, every lab answered by a worker.
-# A worker: one implementation of the graded lab (or of all six), remote_<lab>
+# A worker: one implementation of the graded lab (or of all of them), remote_<lab>
 #   for the others, and the worker's main. It holds no reference code.
 
 # The bits 1..N of a set of lab names (lab k is bit k).

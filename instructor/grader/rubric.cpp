@@ -108,6 +108,18 @@ Rule parse_rule(const json& value, const LabRubric& lab, const std::set<std::str
     for (const json& required : value.value("requires", json::array())) {
         if (!required.is_string()) at.fail(offset, what + ": requires must list rule names");
         std::string name = required;
+        if (name.rfind("*:", 0) == 0) { // "*:unit": that rule of every lab listed before this one
+            const std::string id = name.substr(2);
+            std::set<std::string> labs;
+            for (const std::string& other : earlier) labs.insert(other.substr(0, other.find(':')));
+            labs.erase(lab.lab);
+            if (labs.empty()) at.fail(offset, what + " requires \"" + name + "\", but no lab is listed before it");
+            for (const std::string& other : labs) {
+                if (!earlier.count(other + ":" + id)) at.fail(offset, what + " requires \"" + name + "\", but lab " + other + " has no rule \"" + id + "\"");
+                rule.requires_rules.push_back(other + ":" + id);
+            }
+            continue;
+        }
         if (name.find(':') == std::string::npos) name = lab.lab + ":" + name;
         if (!earlier.count(name)) at.fail(offset, what + " requires \"" + required.get<std::string>() + "\", which is not a rule listed before it");
         rule.requires_rules.push_back(name);

@@ -14,7 +14,8 @@
 //           "points": 6,                  split evenly over the tests the rule matches (hundredths), or
 //           "points_each": 0.5,           ... the same points for every matched test
 //           "requires": ["unit"],         optional: rules whose tests must all pass first, else this
-//                                         rule's tests are skipped with the reason
+//                                         rule's tests are skipped with the reason; "*:unit" names
+//                                         the rule "unit" of every lab listed before this one
 //           "optional": true,             optional: may match no test; its points then go to the lab's
 //                                         other rules, in proportion (hidden tests that are not written yet)
 //           "image": true | RAMP }        optional: the tests compare images; partial credit on the ramp

@@ -44,6 +44,8 @@ std::string_view function_of(Op op) {
         "Scene::closest_hit", "Scene::occluded", "spawn_ray", "is_lit", "lambert", "blinn_phong",
         "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
         "fresnel_blend"};
+    static_assert(std::ranges::none_of(names, [](std::string_view name) { return name.empty(); }),
+                  "every Op of lab_link.hpp needs its function's name here, in the enum's order");
     const int index = static_cast<int>(op);
     return index >= 1 && index <= kLastOp ? names[static_cast<std::size_t>(index)] : "?";
 }

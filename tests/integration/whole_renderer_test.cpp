@@ -1,4 +1,4 @@
-// The integration tier: all six labs of one implementation together, rendering
+// The integration tier: every lab of one implementation together, rendering
 // whole scenes at stage 6 against reference pictures made by the reference
 // solution. A lab that passes its own tests but breaks when combined with the
 // others (a wrong convention at an interface, say) shows up here.

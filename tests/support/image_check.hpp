@@ -18,6 +18,8 @@
 // the reference solution linked).
 #pragma once
 
+#include "whitted/lab_table.hpp"
+
 #include <string>
 
 namespace whitted::testing_helpers {
@@ -25,7 +27,7 @@ namespace whitted::testing_helpers {
 struct ImageCheck {
     std::string scene;     // path relative to the source tree, e.g. "scenes/03_blinn_phong.p3f"
     std::string reference; // path relative to the source tree, e.g. "tests/labs/03_blinn_phong/03_blinn_phong.png"
-    int stage = 6;         // render with the features of labs 1..stage
+    int stage = kLabCount; // render with the features of labs 1..stage
     int width = 160;       // the scene file's aspect ratio is replaced by width x height
     int height = 120;
 };

@@ -29,7 +29,7 @@ inline Material diffuse_material(Color color) {
 }
 
 /// The colour seen along one ray, traced as an eye ray with the features of labs 1..stage.
-inline Color trace_one(const Scene& scene, const Ray& ray, int stage = 6, int max_depth = 10) {
+inline Color trace_one(const Scene& scene, const Ray& ray, int stage = kLabCount, int max_depth = 10) {
     RenderSettings settings;
     settings.stage = stage;
     settings.max_depth = max_depth;
@@ -121,7 +121,7 @@ namespace whitted::testing_helpers {
 /// A Tracer with its own settings and ray counts, to call lab functions such as
 /// lambert() or blinn_phong() directly. Render with the features of labs 1..stage.
 struct TestTracer {
-    explicit TestTracer(const Scene& scene, int stage = 6) : tracer(scene, settings, stats) { settings.stage = stage; }
+    explicit TestTracer(const Scene& scene, int stage = kLabCount) : tracer(scene, settings, stats) { settings.stage = stage; }
     RenderSettings settings;
     RayStats stats;
     Tracer tracer;

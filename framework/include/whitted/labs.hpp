@@ -1,4 +1,4 @@
-// The lab contract: every function the six labs ask you to write.
+// The lab contract: every function the labs ask you to write.
 //
 // Your code goes in labs/NN_*.cpp, one file per lab. The framework calls these
 // functions and nothing else of yours.

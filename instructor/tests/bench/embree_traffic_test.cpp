@@ -174,12 +174,12 @@ TEST(EmbreeTraffic, DepthOneShootsEyeAndShadowRaysOnly) {
 }
 
 TEST(EmbreeTraffic, ShootsTheRayTreeWhittedShootsOnEveryKindOfShape) {
-    if (!labs_done()) GTEST_SKIP() << "comparing with whitted needs all six labs";
+    if (!labs_done()) GTEST_SKIP() << "comparing with whitted needs every lab";
     expect_same_traffic(every_kind(), 5);
 }
 
 TEST(EmbreeTraffic, ShootsTheRayTreeWhittedShootsOnTheClassicScene) {
-    if (!labs_done()) GTEST_SKIP() << "comparing with whitted needs all six labs";
+    if (!labs_done()) GTEST_SKIP() << "comparing with whitted needs every lab";
     LoadedScene loaded = load_scene(std::filesystem::path(WHITTED_SOURCE_DIR) / "scenes" / "whitted_1980.p3f");
     loaded.data.camera = loaded.data.camera.with_resolution(64, 64);
     expect_same_traffic(loaded.data, 6);

@@ -73,6 +73,27 @@ TEST(Rubric, ErrorsForWrongContent) {
               std::string::npos);
 }
 
+// "*:unit" is the rule "unit" of every lab before: a new lab needs no edit of the integration tier.
+TEST(Rubric, AStarPrerequisiteNamesThatRuleOfEveryEarlierLab) {
+    std::string text = kValid;
+    const std::string from = "\"requires\": [\"01_ray_casting:unit\"]";
+    text.replace(text.find(from), from.size(), "\"requires\": [\"*:unit\"]");
+    const Rubric rubric = parse_rubric(text, "rubric.json", kLabs);
+    EXPECT_EQ(rubric.labs[1].rules[0].requires_rules, std::vector<std::string>{"01_ray_casting:unit"});
+    text.replace(text.find("\"*:unit\""), 8, "\"*:units\"");
+    EXPECT_NE(error_of(text).find("lab 01_ray_casting has no rule \"units\""), std::string::npos) << error_of(text);
+}
+
+// The project rubric's integration tier requires every lab's unit tests, whatever the labs.
+TEST(Rubric, TheProjectIntegrationRequiresEveryLabsUnitRule) {
+    std::vector<std::string> labs = lab_names();
+    labs.push_back("integration");
+    const Rubric rubric = load_rubric(std::string(WHITTED_SOURCE_DIR) + "/instructor/rubric.json", labs);
+    std::vector<std::string> expected;
+    for (std::size_t i = 0; i + 1 < labs.size(); ++i) expected.push_back(labs[i] + ":unit");
+    EXPECT_EQ(rubric.labs.back().rules[0].requires_rules, expected);
+}
+
 // The rubric grades the labs of the lab table, in its order, then the integration tier.
 TEST(Rubric, TheProjectRubricIsValidAndWorthOneHundredPoints) {
     std::vector<std::string> labs = lab_names();
