@@ -4,7 +4,6 @@
 #include "whitted/lab_table.hpp"
 #include "whitted/not_implemented.hpp"
 
-#include <algorithm>
 #include <array>
 
 namespace whitted::link {
@@ -38,16 +37,22 @@ std::vector<std::byte> exception_payload(ExceptionKind kind, const std::string& 
 
 } // namespace
 
+// The name of each Op's function, in the enum's order.
+constexpr std::array<std::string_view, kLastOp + 1> kFunctionNames{
+    "?", "primary_ray", "intersect_sphere", "intersect_plane", "intersect_triangle", "closest_hit",
+    "Scene::closest_hit", "Scene::occluded", "spawn_ray", "is_lit", "lambert", "blinn_phong",
+    "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
+    "fresnel_blend"};
+constexpr bool every_op_named() {
+    for (std::string_view name : kFunctionNames)
+        if (name.empty()) return false;
+    return true;
+}
+static_assert(every_op_named(), "every Op of lab_link.hpp needs its function's name in kFunctionNames, in the enum's order");
+
 std::string_view function_of(Op op) {
-    static constexpr std::array<std::string_view, kLastOp + 1> names{
-        "?", "primary_ray", "intersect_sphere", "intersect_plane", "intersect_triangle", "closest_hit",
-        "Scene::closest_hit", "Scene::occluded", "spawn_ray", "is_lit", "lambert", "blinn_phong",
-        "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
-        "fresnel_blend"};
-    static_assert(std::ranges::none_of(names, [](std::string_view name) { return name.empty(); }),
-                  "every Op of lab_link.hpp needs its function's name here, in the enum's order");
     const int index = static_cast<int>(op);
-    return index >= 1 && index <= kLastOp ? names[static_cast<std::size_t>(index)] : "?";
+    return index >= 1 && index <= kLastOp ? kFunctionNames[static_cast<std::size_t>(index)] : "?";
 }
 
 int lab_of(Op op) {
