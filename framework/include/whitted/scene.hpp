@@ -74,7 +74,8 @@ class Scene {
     /// The material of the surface that was hit.
     const Material& material(const Hit& hit) const { return data_.materials[hit.material]; }
 
-    /// The nearest surface along the ray with t inside t_range, if any.
+    /// The nearest surface along the ray with t inside t_range, if any: lab 1's
+    /// closest_hit() over the whole scene, run on each leaf of the BVH.
     std::optional<Hit> closest_hit(const Ray& ray, Interval t_range = {}) const;
 
     /// True when any surface lies along the ray with t inside t_range.
