@@ -24,8 +24,12 @@ int main(int argc, char** argv) {
         // Point at the help of the command that was given, if any.
         std::string command = "render";
         bool given = false;
-        for (const whitted::Command& c : commands)
-            if (c.app->parsed()) command = c.app->get_name(), given = true;
+        for (const whitted::Command& c : commands) {
+            if (c.app->parsed()) {
+                command = c.app->get_name();
+                given = true;
+            }
+        }
         if (!given && argc > 1 && argv[1][0] != '-') {
             std::string names;
             for (const whitted::Command& c : commands) names += (names.empty() ? "" : ", ") + c.app->get_name();

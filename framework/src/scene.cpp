@@ -20,11 +20,7 @@ std::uint64_t next_serial() {
 
 } // namespace
 
-// Interpolates a pp triangle's vertex normals at the hit's barycentric coordinates.
-// The result is kept only when it honours what the labs rely on: it faces the
-// incoming ray, and the mirror direction about it leaves on the ray's side of
-// the true surface. Near silhouettes of coarse meshes neither need hold; there
-// the geometric normal is used.
+// See whitted/engine/vertex_normals.hpp for what is kept and why.
 void apply_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& normals) {
     const double b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
     Vec3 n = b0 * normals[0] + b1 * normals[1] + b2 * normals[2];
