@@ -1,7 +1,9 @@
 // Lab 1 — ray casting: primary rays and the intersections of the first shapes.
 #include "whitted/labs.hpp"
+#include "whitted/engine/hit_distances.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace whitted {
 
@@ -12,7 +14,10 @@ Ray primary_ray(const Camera& camera, double x, double y) {
     return Ray{camera.eye, glm::normalize(d)};
 }
 
-std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range) {
+// The distances alone (declared in whitted/engine/hit_distances.hpp): the reference
+// renderer's fast queries call these same functions, so they agree bit for bit.
+
+std::optional<double> sphere_distance(const Ray& ray, const Sphere& sphere, Interval t_range) {
     // |o + t d - c|^2 = r^2 with |d| = 1:  t^2 + 2 b t + c = 0, b = (o - c) . d, c = |o - c|^2 - r^2.
     const Vec3 oc = ray.origin - sphere.center;
     const double b = glm::dot(oc, ray.direction);
@@ -26,27 +31,21 @@ std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere, Interv
     const double q = -b - std::copysign(std::sqrt(discriminant), b);
     double t0 = q, t1 = (q != 0.0) ? c / q : 0.0;
     if (t0 > t1) std::swap(t0, t1);
-    double t = t0;
-    if (!t_range.surrounds(t)) {
-        t = t1;
-        if (!t_range.surrounds(t)) return std::nullopt;
-    }
-    const Point3 p = ray.at(t);
-    Vec3 outward = (p - sphere.center) / sphere.radius;
-    if (sphere.inward) outward = -outward;
-    return make_hit(ray, t, outward);
+    if (t_range.surrounds(t0)) return t0;
+    if (t_range.surrounds(t1)) return t1;
+    return std::nullopt;
 }
 
-std::optional<Hit> intersect_plane(const Ray& ray, const Plane& plane, Interval t_range) {
+std::optional<double> plane_distance(const Ray& ray, const Plane& plane, Interval t_range) {
     // n . (o + t d - p) = 0  =>  t = n . (p - o) / (n . d)
     const double denominator = glm::dot(plane.normal, ray.direction);
     if (denominator == 0.0) return std::nullopt; // parallel
     const double t = glm::dot(plane.normal, plane.point - ray.origin) / denominator;
     if (!t_range.surrounds(t)) return std::nullopt;
-    return make_hit(ray, t, plane.normal);
+    return t;
 }
 
-std::optional<Hit> intersect_triangle(const Ray& ray, const Triangle& triangle, Interval t_range) {
+std::optional<TriangleDistance> triangle_distance(const Ray& ray, const Triangle& triangle, Interval t_range) {
     // Moller-Trumbore: solve o + t d = (1 - b1 - b2) p0 + b1 p1 + b2 p2 with Cramer's rule.
     const Vec3 e1 = triangle.p1 - triangle.p0;
     const Vec3 e2 = triangle.p2 - triangle.p0;
@@ -62,8 +61,32 @@ std::optional<Hit> intersect_triangle(const Ray& ray, const Triangle& triangle, 
     if (b2 < 0.0 || b1 + b2 > 1.0) return std::nullopt;
     const double t = glm::dot(e2, q) * inverse;
     if (!t_range.surrounds(t)) return std::nullopt;
-    Hit hit = make_hit(ray, t, glm::normalize(glm::cross(e1, e2)));
-    hit.uv = Vec2(b1, b2);
+    return TriangleDistance{t, b1, b2};
+}
+
+// The hits, built from the distances.
+
+std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range) {
+    const std::optional<double> t = sphere_distance(ray, sphere, t_range);
+    if (!t) return std::nullopt;
+    Vec3 outward = (ray.at(*t) - sphere.center) / sphere.radius;
+    if (sphere.inward) outward = -outward;
+    return make_hit(ray, *t, outward);
+}
+
+std::optional<Hit> intersect_plane(const Ray& ray, const Plane& plane, Interval t_range) {
+    const std::optional<double> t = plane_distance(ray, plane, t_range);
+    if (!t) return std::nullopt;
+    return make_hit(ray, *t, plane.normal);
+}
+
+std::optional<Hit> intersect_triangle(const Ray& ray, const Triangle& triangle, Interval t_range) {
+    const std::optional<TriangleDistance> found = triangle_distance(ray, triangle, t_range);
+    if (!found) return std::nullopt;
+    const Vec3 e1 = triangle.p1 - triangle.p0;
+    const Vec3 e2 = triangle.p2 - triangle.p0;
+    Hit hit = make_hit(ray, found->t, glm::normalize(glm::cross(e1, e2)));
+    hit.uv = Vec2(found->b1, found->b2);
     return hit;
 }
 

@@ -63,9 +63,13 @@ WorkerKit stage_kit(const WorkerKit& kit, const fs::path& folder) {
     fs::create_directories(folder / "lib");
     WorkerKit staged = kit;
     staged.root = folder;
-    for (const fs::directory_entry& entry : fs::directory_iterator(kit.headers))
-        if (entry.is_regular_file() && entry.path().extension() == ".hpp")
-            fs::copy_file(entry.path(), folder / "include" / "whitted" / entry.path().filename());
+    // Every header, engine/ included (the reference lab 1 includes engine/hit_distances.hpp).
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kit.headers)) {
+        if (!entry.is_regular_file() || entry.path().extension() != ".hpp") continue;
+        const fs::path to = folder / "include" / "whitted" / fs::relative(entry.path(), kit.headers);
+        fs::create_directories(to.parent_path());
+        fs::copy_file(entry.path(), to);
+    }
     staged.headers = folder / "include" / "whitted";
     // GCC uses whitted/labs.hpp.gch in place of the header when it is valid for the compilation, else the header.
     if (!kit.precompiled.empty()) {

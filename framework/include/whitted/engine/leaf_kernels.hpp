@@ -3,8 +3,8 @@
 // Why: the labs' `closest_hit()` builds a complete `Hit` (point, normals, side)
 // for every candidate a ray meets, and a shadow feeler builds one just to learn
 // "something is there". The reference renderer plugs in queries that walk the
-// BVH with distance-only tests inlined, with the very same arithmetic as the
-// reference labs; the scene then builds one `Hit` for the nearest primitive
+// BVH with distance-only tests, the reference lab 1's own (hit_distances.hpp);
+// the scene then builds one `Hit` for the nearest primitive
 // alone: the same image, bit for bit (instructor/tests/solution checks it), for less work.
 // A student build has none, so every ray goes through the student's own code.
 #pragma once

@@ -1,0 +1,38 @@
+// Lab 1's intersections, distance only: you do not need this header for the labs.
+//
+// Why: the reference renderer's leaf kernels (see leaf_kernels.hpp) test many
+// candidates per ray and want only the nearest one's distance, while lab 1's
+// intersect_sphere/plane/triangle also build a Hit. The reference lab 1 defines
+// these three functions and builds its hits from them, and the kernels call the
+// very same functions, so both paths agree bit for bit because there is one copy
+// of the arithmetic (as pbrt-v4's shapes feed both their intersection queries
+// from one BasicIntersect). A student's lab 1 need not define them: only the
+// reference renderer calls them.
+#pragma once
+
+#include "whitted/interval.hpp"
+#include "whitted/ray.hpp"
+#include "whitted/shapes.hpp"
+
+#include <optional>
+
+namespace whitted {
+
+/// Where a ray meets a triangle: the distance t along the ray and the barycentric
+/// coordinates (b1, b2) of the point, the weights of p1 and p2.
+struct TriangleDistance {
+    double t = 0.0;
+    double b1 = 0.0;
+    double b2 = 0.0;
+};
+
+/// The distance t of the ray's hit with the sphere inside t_range (the nearer root first), if any.
+std::optional<double> sphere_distance(const Ray& ray, const Sphere& sphere, Interval t_range);
+
+/// The distance t of the ray's hit with the plane inside t_range, if any (none when the ray is parallel).
+std::optional<double> plane_distance(const Ray& ray, const Plane& plane, Interval t_range);
+
+/// The distance and barycentric coordinates of the ray's hit with the triangle inside t_range, if any.
+std::optional<TriangleDistance> triangle_distance(const Ray& ray, const Triangle& triangle, Interval t_range);
+
+} // namespace whitted
