@@ -28,9 +28,10 @@ ImageFormat image_format(const std::filesystem::path& path) {
     if (extension == ".png") return ImageFormat::png;
     if (extension == ".ppm") return ImageFormat::ppm;
     if (extension == ".pfm") return ImageFormat::pfm;
-    if (extension.empty()) throw image_error(path, "the file name has no extension (accepted: .png, .ppm, .pfm)");
+    if (extension == ".jpg" || extension == ".jpeg") return ImageFormat::jpeg;
+    if (extension.empty()) throw image_error(path, "the file name has no extension (accepted: .png, .ppm, .pfm; .jpg for reading)");
     throw image_error(path, "unknown image extension '" + path.extension().string() +
-                                "' (accepted: .png, .ppm, .pfm)");
+                                "' (accepted: .png, .ppm, .pfm; .jpg for reading)");
 }
 
 } // namespace detail
@@ -120,6 +121,8 @@ unsigned char to_byte(double value, Encoding encoding) {
 
 void write_image(const Image& image, const std::filesystem::path& path, Encoding encoding) {
     const detail::ImageFormat format = detail::image_format(path);
+    if (format == detail::ImageFormat::jpeg)
+        throw image_error(path, "JPEG files can be read (skybox faces) but not written (write .png, .ppm or .pfm)");
     if (image.width <= 0 || image.height <= 0 ||
         image.pixels.size() != static_cast<std::size_t>(image.width) * image.height) {
         throw image_error(path, "cannot write an empty or inconsistent image (" + std::to_string(image.width) + "x" +
@@ -133,6 +136,7 @@ void write_image(const Image& image, const std::filesystem::path& path, Encoding
     case detail::ImageFormat::png: write_png(image, path, encoding); break;
     case detail::ImageFormat::ppm: write_ppm(image, path, encoding); break;
     case detail::ImageFormat::pfm: write_pfm(image, path); break;
+    case detail::ImageFormat::jpeg: break; // refused above
     }
 }
 

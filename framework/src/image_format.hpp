@@ -11,7 +11,7 @@
 
 namespace whitted::detail {
 
-enum class ImageFormat { png, ppm, pfm };
+enum class ImageFormat { png, ppm, pfm, jpeg }; // JPEG: read only (skybox faces)
 
 /// The format named by the path's extension (case-insensitive); throws ImageError for any other.
 ImageFormat image_format(const std::filesystem::path& path);

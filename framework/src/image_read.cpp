@@ -1,4 +1,4 @@
-// Reading PNG, PPM (P6 and P3) and PFM (PF and Pf) files into linear images.
+// Reading PNG, JPEG, PPM (P6 and P3) and PFM (PF and Pf) files into linear images.
 // Every malformed file becomes an ImageError "path: what is wrong".
 #include "image_format.hpp"
 #include "printable.hpp"
@@ -243,18 +243,17 @@ void check_png_chunks(std::string_view bytes, const std::filesystem::path& path)
     }
 }
 
-/// Reads a PNG of any bit depth and channel count as 8-bit RGB, v / 255.
-Image read_png(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
-    static constexpr std::string_view signature("\x89PNG\r\n\x1a\n", 8);
-    if (!bytes.starts_with(signature)) throw image_error(path, "not a PNG file (bad signature)");
-    if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw image_error(path, "PNG file too large");
-    check_png_chunks(bytes, path);
+/// Reads a PNG (any bit depth and channel count) or a baseline / progressive
+/// JPEG as 8-bit RGB, v / 255, with stb_image.
+Image read_with_stb(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels,
+                    const std::string& kind) {
+    if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw image_error(path, kind + " file too large");
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int size = static_cast<int>(bytes.size());
     int width = 0, height = 0, channels = 0;
     // Check the size before decoding, so a hostile header cannot make us allocate gigabytes.
     if (stbi_info_from_memory(data, size, &width, &height, &channels) == 0) {
-        throw image_error(path, "not a readable PNG file (" + stb_reason() + ")");
+        throw image_error(path, "not a readable " + kind + " file (" + stb_reason() + ")");
     }
     if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide) {
         throw image_error(path, "image size " + std::to_string(width) + "x" + std::to_string(height) +
@@ -263,12 +262,25 @@ Image read_png(std::string_view bytes, const std::filesystem::path& path, std::s
     check_pixel_count({width, height}, max_pixels, path);
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(data, size, &width, &height, &channels, 3), stbi_image_free);
-    if (!pixels) throw image_error(path, "cannot decode PNG (" + stb_reason() + ")");
+    if (!pixels) throw image_error(path, "cannot decode " + kind + " (" + stb_reason() + ")");
     Image image(width, height);
     for (std::size_t i = 0; i < image.pixels.size() * 3; ++i) {
         image.pixels[i / 3][static_cast<int>(i % 3)] = pixels.get()[i] / 255.0;
     }
     return image;
+}
+
+Image read_png(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
+    static constexpr std::string_view signature("\x89PNG\r\n\x1a\n", 8);
+    if (!bytes.starts_with(signature)) throw image_error(path, "not a PNG file (bad signature)");
+    check_png_chunks(bytes, path);
+    return read_with_stb(bytes, path, max_pixels, "PNG");
+}
+
+Image read_jpeg(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
+    static constexpr std::string_view signature("\xff\xd8\xff", 3);
+    if (!bytes.starts_with(signature)) throw image_error(path, "not a JPEG file (bad signature)");
+    return read_with_stb(bytes, path, max_pixels, "JPEG");
 }
 
 } // namespace
@@ -280,6 +292,7 @@ Image detail::decode_image(std::string_view bytes, ImageFormat format, const std
     case ImageFormat::png: return read_png(bytes, path, max_pixels);
     case ImageFormat::ppm: return read_ppm(bytes, path, max_pixels);
     case ImageFormat::pfm: return read_pfm(bytes, path, max_pixels);
+    case ImageFormat::jpeg: return read_jpeg(bytes, path, max_pixels);
     }
     throw image_error(path, "unknown image format");
 }

@@ -1,7 +1,11 @@
 // P3F, the course's NFF-derived format.
 #include "scene_builder.hpp"
 
+#include "whitted/image.hpp"
+
 #include <algorithm>
+#include <filesystem>
+#include <memory>
 #include <limits>
 
 namespace whitted::detail {
@@ -18,23 +22,63 @@ Token read_word(TokenStream& tokens, std::string_view keyword, std::string_view 
     return token;
 }
 
-/// `v`: the P3F angle is the full view-plane height, optionally followed by `aperture a` and `focal f`.
+/// `v`: the P3F angle is the full view-plane height, optionally followed by
+/// `aperture a` (the lens diameter in pixel widths) and `focal f` (the distance
+/// in focus over the view distance), and by the motion-blur shutter `time0 t0 time1 t1`.
 void read_viewpoint(SceneBuilder& scene, const Token& keyword) {
     TokenStream& tokens = scene.tokens();
     const Viewpoint view = scene.read_viewpoint(keyword);
+    double aperture = 0.0, focal_ratio = 1.0;
     if (tokens.peek().text == "aperture") {
         const Token word = tokens.next();
-        if (NumberReader(tokens, "'aperture'", 1).non_negative("the lens aperture") > 0.0)
-            scene.warn(word, "depth of field is not rendered (the camera is a pinhole)");
+        aperture = NumberReader(tokens, "'aperture'", 1).non_negative("the lens aperture (in pixel widths)");
+        if (aperture > 0.0) scene.warn(word, "depth of field is not rendered yet (the camera is a pinhole)");
     }
     if (tokens.peek().text == "focal") {
         tokens.next();
-        NumberReader(tokens, "'focal'", 1).positive("the focal distance");
+        focal_ratio = NumberReader(tokens, "'focal'", 1).positive("the focal ratio (distance in focus / view distance)");
+    }
+    if (tokens.peek().text == "time0") {
+        const Token word = tokens.next();
+        const double time0 = NumberReader(tokens, "'time0'", 1).number("the shutter's opening time");
+        if (tokens.peek().text != "time1") tokens.fail(tokens.peek(), "expected 'time1' after 'time0 " + format_number(time0) + "', found " + describe(tokens.peek()));
+        tokens.next();
+        const double time1 = NumberReader(tokens, "'time1'", 1).number("the shutter's closing time");
+        if (time1 < time0) tokens.fail(word, "expected time0 <= time1, found " + format_number(time0) + " > " + format_number(time1));
+        if (time1 > time0) scene.warn(word, "motion blur is not rendered (the shutter is treated as instantaneous)");
     }
     scene.set_camera(view, view.angle);
+    Camera& camera = scene.data().camera;
+    camera.aperture = aperture * camera.w / camera.res_x;
+    camera.focal_ratio = focal_ratio;
 }
 
-/// `f Rd Gd Bd Kd Rs Gs Bs Ks Shine T ior`.
+/// `accel 0|1|2` (or `none`, `grid`, `bvh`): the acceleration structure of a student build.
+Acceleration read_acceleration(TokenStream& tokens, const Token& keyword) {
+    const Token word = read_word(tokens, keyword.text, "an acceleration structure (0 none, 1 grid, 2 bvh)");
+    if (word.text == "0" || word.text == "none") return Acceleration::none;
+    if (word.text == "1" || word.text == "grid") return Acceleration::grid;
+    if (word.text == "2" || word.text == "bvh") return Acceleration::bvh;
+    tokens.fail(word, "expected 0 (none), 1 (grid) or 2 (bvh) after 'accel', found " + describe(word));
+}
+
+/// `env DIR`: the six skybox faces in DIR, relative to the scene file's folder.
+void read_environment(SceneBuilder& scene, const Token& keyword) {
+    TokenStream& tokens = scene.tokens();
+    const Token word = read_word(tokens, keyword.text, "the skybox folder");
+    // Messages name the folder as it is written, so it must be printable.
+    if (!std::all_of(word.text.begin(), word.text.end(), [](char c) { return c > ' ' && c < 0x7f; }))
+        tokens.fail(word, "expected a skybox folder name of plain ASCII letters, digits and signs, found " + describe(word));
+    const std::filesystem::path folder =
+        std::filesystem::path(tokens.file_name()).parent_path() / std::filesystem::path(std::string(word.text));
+    try {
+        scene.data().skybox = std::make_shared<const Skybox>(Skybox::load(folder));
+    } catch (const ImageError& error) {
+        tokens.fail(word, std::string("cannot load the skybox: ") + error.what());
+    }
+}
+
+/// `f Rd Gd Bd Kd Rs Gs Bs Ks Shine T ior`, optionally followed by the course's `roughness`.
 void read_material(SceneBuilder& scene) {
     NumberReader numbers(scene.tokens(), "'f'", 11);
     Material material;
@@ -43,6 +87,11 @@ void read_material(SceneBuilder& scene) {
     material.specular_color = numbers.color("the specular colour");
     material.specular = numbers.non_negative("the specular weight Ks");
     read_shine_and_transmission(numbers, scene.tokens(), material);
+    if (scene.tokens().next_is_number()) { // a twelfth number: the roughness of glossy reflection
+        const Token at = scene.tokens().peek();
+        if (NumberReader(scene.tokens(), "'f'", 1).non_negative("the roughness") > 0.0)
+            scene.warn(at, "glossy (rough) reflection is not rendered: the reflection is a perfect mirror");
+    }
     scene.add_material(material);
 }
 
@@ -112,17 +161,17 @@ LoadedScene parse_p3f(TokenStream& tokens, const SceneLimits& limits) {
         if (word == "v") {
             read_viewpoint(scene, keyword);
         } else if (word == "accel") {
-            read_word(tokens, word, "an acceleration structure name"); // only the BVH exists
+            scene.data().acceleration = read_acceleration(tokens, keyword);
         } else if (word == "spp") {
+            // 0: Whitted ray tracing, one ray through each pixel centre; n > 0: n samples a pixel.
             const long long samples =
-                NumberReader(tokens, "'spp'", 1).integer("the samples per pixel", 1, kMostSamplesPerPixel);
+                NumberReader(tokens, "'spp'", 1).integer("the samples per pixel", 0, kMostSamplesPerPixel);
             scene.data().samples_per_pixel = static_cast<int>(samples);
-            if (samples > 1) scene.warn(keyword, "rendering uses 1 sample per pixel");
+            if (samples > 0) scene.warn(keyword, "anti-aliasing is not rendered yet: one ray through each pixel centre");
         } else if (word == "bclr") {
             scene.data().background = NumberReader(tokens, "'bclr'", 3).color("the background colour");
         } else if (word == "env") {
-            read_word(tokens, word, "an environment map path");
-            scene.warn(keyword, "environment maps are not rendered; the background colour 'bclr' is used");
+            read_environment(scene, keyword);
         } else if (word == "l") {
             NumberReader numbers(tokens, "'l'", 6);
             const Point3 position = numbers.vec3("the light position");

@@ -56,6 +56,9 @@ class TokenStream {
     /// "file:line:col" of the token.
     std::string where(const Token& token) const;
 
+    /// The file name the messages give (paths in the file are relative to its folder).
+    const std::string& file_name() const { return file_name_; }
+
     /// Throws the SceneError "file:line:col: message" located at the token.
     [[noreturn]] void fail(const Token& token, const std::string& message) const;
 

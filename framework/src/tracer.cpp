@@ -128,7 +128,7 @@ Color Tracer::Engine::shade(const Tracer& tracer, const Ray& ray, int depth) {
     const std::optional<Hit> hit = scene.closest_hit(ray);
     if (tree) [[unlikely]]
         tree->nodes[current_node].hit = hit;
-    if (!hit) return scene.background();
+    if (!hit) return scene.background(ray.direction);
     const Material& material = scene.material(*hit);
     const Vec3 wo = -ray.direction;
     const auto reached = [stage = settings.stage](Stage feature) { return stage >= stage_number(feature); };

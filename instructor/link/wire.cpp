@@ -63,6 +63,7 @@ void Writer::put(const Hit& hit) {
 void Writer::put(const Camera& c) {
     put(c.eye), put(c.at), put(c.up), put(c.fovy), put(c.res_x), put(c.res_y);
     put(c.df), put(c.h), put(c.w), put(c.xe), put(c.ye), put(c.ze);
+    put(c.aperture), put(c.focal_ratio);
 }
 void Writer::put(const Shape& shape) {
     raw(static_cast<std::uint8_t>(shape.index()));
@@ -100,7 +101,11 @@ void Writer::put(const SceneData& d) {
     put_all(d.lights), put_all(d.materials), put_all(d.primitives);
     put(static_cast<std::uint64_t>(d.vertex_normals.size()));
     for (const VertexNormals& normals : d.vertex_normals) put(normals[0]), put(normals[1]), put(normals[2]);
-    put(d.max_depth), put(d.samples_per_pixel);
+    put(d.max_depth), put(d.samples_per_pixel), put(static_cast<int>(d.acceleration));
+    put(d.skybox != nullptr);
+    if (d.skybox)
+        for (const SkyboxFace& face : d.skybox->faces())
+            put(face.width), put(face.height), put(std::string(face.rgb.begin(), face.rgb.end()));
 }
 
 // ---- Reader --------------------------------------------------------------------------
@@ -160,6 +165,7 @@ template <> Camera Reader::get<Camera>() {
     c.res_x = get<int>(), c.res_y = get<int>();
     c.df = get<double>(), c.h = get<double>(), c.w = get<double>();
     c.xe = get<Vec3>(), c.ye = get<Vec3>(), c.ze = get<Vec3>();
+    c.aperture = get<double>(), c.focal_ratio = get<double>();
     return c;
 }
 template <> Shape Reader::get<Shape>() {
@@ -251,6 +257,21 @@ template <> SceneData Reader::get<SceneData>() {
     d.vertex_normals.resize(count(72));
     for (VertexNormals& normals : d.vertex_normals) normals = {get<Vec3>(), get<Vec3>(), get<Vec3>()};
     d.max_depth = get<int>(), d.samples_per_pixel = get<int>();
+    const int acceleration = get<int>();
+    if (acceleration < 0 || acceleration > static_cast<int>(Acceleration::bvh)) throw LinkError("a scene with a bad acceleration");
+    d.acceleration = static_cast<Acceleration>(acceleration);
+    if (get<bool>()) {
+        std::array<SkyboxFace, 6> faces;
+        for (SkyboxFace& face : faces) {
+            face.width = get<int>(), face.height = get<int>();
+            const std::string rgb = get<std::string>();
+            face.rgb.assign(rgb.begin(), rgb.end());
+            if (face.width < 1 || face.height < 1 ||
+                face.rgb.size() != static_cast<std::size_t>(face.width) * static_cast<std::size_t>(face.height) * 3)
+                throw LinkError("a skybox face with a bad size");
+        }
+        d.skybox = std::make_shared<const Skybox>(std::move(faces));
+    }
     return d;
 }
 template <> std::optional<Hit> Reader::get<std::optional<Hit>>() {

@@ -226,8 +226,8 @@ TEST(SceneErrors, P3fMaterialWithNffsEightNumbersIsAnError) {
     expect_error(p3f_error("f 1 1 1 1 0 1 0 1\ns 0 0 0 1"), "scene.p3f:3:1: expected a number", "'s'");
 }
 
-TEST(SceneErrors, P3fSamplesPerPixelBelowOneIsAnError) {
-    expect_error(p3f_error("spp 0"), "scene.p3f:2:5: expected a whole number from 1", "'0'");
+TEST(SceneErrors, P3fNegativeSamplesPerPixelIsAnError) {
+    expect_error(p3f_error("spp -1"), "scene.p3f:2:5: expected a whole number from 0", "'-1'");
 }
 
 TEST(SceneErrors, P3fNegativeApertureIsAnError) {
@@ -237,7 +237,18 @@ TEST(SceneErrors, P3fNegativeApertureIsAnError) {
 }
 
 TEST(SceneErrors, P3fAccelWithoutAName) {
-    EXPECT_EQ(p3f_error("accel"), "scene.p3f:2:6: expected an acceleration structure name after 'accel', found end of file");
+    EXPECT_EQ(p3f_error("accel"),
+              "scene.p3f:2:6: expected an acceleration structure (0 none, 1 grid, 2 bvh) after 'accel', found end of file");
+}
+
+TEST(SceneErrors, P3fUnknownAccelIsAnError) {
+    EXPECT_EQ(p3f_error("accel 3"), "scene.p3f:2:7: expected 0 (none), 1 (grid) or 2 (bvh) after 'accel', found '3'");
+}
+
+TEST(SceneErrors, P3fShutterClosingBeforeItOpensIsAnError) {
+    expect_error(view_error("v from 0 0 5 at 0 0 0 up 0 1 0 angle 45 hither 1 resolution 8 8 time0 1 time1 0",
+                            Dialect::p3f),
+                 "scene.p3f:1:65: expected time0 <= time1", "1 > 0");
 }
 
 TEST(SceneErrors, CheckerBeforeAnyMaterialIsAnError) {

@@ -126,7 +126,8 @@ struct TextWriter {
             line(prefix, text);
         }
         if (!node.hit) {
-            line(prefix, "hits nothing: the background " + vec(context.scene.background()));
+            line(prefix, std::string("hits nothing: the ") + (context.scene.has_skybox() ? "skybox " : "background ") +
+                             vec(context.scene.background(node.ray.direction)));
         } else {
             const Hit& hit = *node.hit;
             std::string text = "hit " + object_name(context, hit.primitive) + " at t " + number(hit.t) + ": point " +

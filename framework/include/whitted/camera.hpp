@@ -18,6 +18,10 @@ struct Camera {
     double fovy = 45.0; // full vertical field of view in degrees, edge to edge of the view plane
     int res_x = 512;
     int res_y = 512;
+    // The thin lens of the course's P3F camera (depth of field). The lens is a
+    // disk of this diameter around the eye, in the xe, ye plane; 0 = a pinhole.
+    double aperture = 0.0;    // lens diameter in scene units (P3F `aperture a`: a pixel widths, a w / res_x)
+    double focal_ratio = 1.0; // distance to the plane in focus / df (P3F `focal f`)
 
     // Derived by `Camera::create`.
     double df = 1.0;    // view distance |eye - at|

@@ -40,10 +40,10 @@ struct ImageError : std::runtime_error {
 std::size_t count_non_finite(const Image& image);
 
 /// Writes the image; the format comes from the extension (.png, .ppm, .pfm).
-/// Throws ImageError for another extension, a non-finite pixel or an I/O failure.
+/// Throws ImageError for another extension (.jpg is read only), a non-finite pixel or an I/O failure.
 void write_image(const Image& image, const std::filesystem::path& path, Encoding encoding = Encoding::linear);
 
-/// Reads a .png, .ppm (P6 or P3) or .pfm file. 8-bit values v become v / 255
+/// Reads a .png, .jpg / .jpeg, .ppm (P6 or P3) or .pfm file. 8-bit values v become v / 255
 /// (no gamma decoding). Throws ImageError with the reason.
 Image read_image(const std::filesystem::path& path);
 

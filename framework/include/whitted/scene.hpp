@@ -9,6 +9,7 @@
 #include "whitted/camera.hpp"
 #include "whitted/material.hpp"
 #include "whitted/primitive.hpp"
+#include "whitted/skybox.hpp"
 
 #include <memory>
 #include <optional>
@@ -18,17 +19,23 @@
 
 namespace whitted {
 
+/// The acceleration structure a student build traverses (P3F `accel`); the
+/// reference renderer always uses the framework's own BVH.
+enum class Acceleration { none, grid, bvh };
+
 /// Everything a scene file says, as plain values.
 struct SceneData {
     Camera camera;
     Color background{0.0};
+    std::shared_ptr<const Skybox> skybox; // P3F `env`: seen instead of the background colour (shared: never changes)
     Color ambient{0.0};           // ambient light intensity (extension keyword `ambient`)
     std::vector<PointLight> lights;
     std::vector<Material> materials;
     std::vector<Primitive> primitives;
     std::vector<VertexNormals> vertex_normals;
     int max_depth = 5;            // deepest ray in the ray tree; the eye ray is depth 1
-    int samples_per_pixel = 1;    // P3F `spp` (rendering uses 1 for now)
+    int samples_per_pixel = 0;    // P3F `spp`: 0 = Whitted, one ray through each pixel centre; n > 0 = n samples a pixel
+    Acceleration acceleration = Acceleration::bvh; // P3F `accel`
 };
 
 /// The intersection tests one ray query makes (the `cost` pass).
@@ -54,6 +61,12 @@ class Scene {
 
     const Camera& camera() const { return data_.camera; }
     const Color& background() const { return data_.background; }
+    /// True when rays that escape see a skybox rather than the background colour.
+    bool has_skybox() const { return data_.skybox != nullptr; }
+    /// What a ray that escapes in `direction` sees: the skybox, else the background colour.
+    Color background(const Vec3& direction) const {
+        return data_.skybox ? data_.skybox->lookup(direction) : data_.background;
+    }
     const Color& ambient() const { return data_.ambient; }
     std::span<const PointLight> lights() const { return data_.lights; }
     std::span<const Primitive> primitives() const { return data_.primitives; }
