@@ -119,6 +119,10 @@ function(whitted_grading_kit)
   endforeach()
   string(APPEND text "link $<JOIN:$<TARGET_PROPERTY:worker_01_ray_casting_stub,LINK_OPTIONS>,\nlink >\n")
   string(APPEND text "link -pthread\n")
+  # The framework reads images (skybox faces) with the system's stb_image.
+  foreach(flag IN LISTS STB_LDFLAGS)
+    string(APPEND text "link ${flag}\n")
+  endforeach()
   string(APPEND text "headers ${PROJECT_SOURCE_DIR}/framework/include/whitted\n")
   # whitted/labs.hpp precompiled with the same compiler and arguments: a lab
   # file that includes it first compiles in a quarter of the time.
