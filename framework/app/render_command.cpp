@@ -28,6 +28,7 @@ struct RenderOptions {
     std::string scene;
     std::string output;
     std::optional<int> width, height, max_depth;
+    std::optional<int> samples; // --spp: samples per pixel (default: the scene's)
     double min_weight = RenderSettings{}.min_weight;
     int threads = 0;
     std::optional<int> stage; // default: the highest stage whose labs are all done
@@ -70,6 +71,7 @@ bool write_stats_json(const StatsRecord& r, const std::string& path) {
         {"stage", r.settings.stage},
         {"max_depth", r.settings.max_depth},
         {"min_weight", r.settings.min_weight},
+        {"samples_per_pixel", r.settings.samples_per_pixel},
         {"threads", r.result.threads},
         {"parse_seconds", r.parse_seconds},
         {"build_seconds", r.build_seconds},
@@ -101,6 +103,10 @@ int run_render(const RenderOptions& options) {
     settings.stage = *stage;
     settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);
     settings.min_weight = options.min_weight;
+    settings.samples_per_pixel = options.samples.value_or(loaded.data.samples_per_pixel);
+    if (settings.samples_per_pixel > 0 && settings.stage < stage_number(Stage::anti_aliasing) && !options.pass)
+        std::fprintf(stderr, "note: %d samples per pixel need lab 7 (anti-aliasing); stage %d traces one ray through "
+                             "each pixel centre\n", settings.samples_per_pixel, settings.stage);
     const double parse_seconds = seconds_since(load_start);
     const auto build_start = std::chrono::steady_clock::now();
     const Scene scene(std::move(loaded.data), linked_leaf_kernels());
@@ -180,6 +186,10 @@ Command add_render_command(CLI::App& app) {
                                "Skip secondary rays whose accumulated weight is below this (Whitted's adaptive "
                                "depth control; 0 = trace every ray down to the maximum depth; default 1/1024)")
         ->check(min_weight_validator());
+    render_command->add_option("--spp", options->samples,
+                               "Samples per pixel: 0 = one ray through each pixel centre (Whitted); N > 0 = the "
+                               "average of N jittered samples (lab 7, anti-aliasing) (default: the scene's spp, else 0)")
+        ->check(CLI::Range(0, 65536));
     render_command->add_option("--threads", options->threads, "Rendering threads; 0 = one per core (default 0)")
         ->check(CLI::Range(0, 1024));
     render_command->add_option("--stage", options->stage,

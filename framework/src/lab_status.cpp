@@ -50,6 +50,8 @@ std::map<std::string_view, std::function<void()>> lab_probes(const Scene& scene,
         {"refraction", [=, &tracer] { refraction(tracer, hit, wo, 1); }},
         {"fresnel_reflectance", [] { fresnel_reflectance(1.0, 1.0, 1.5); }},
         {"fresnel_blend", [=, &tracer] { fresnel_blend(tracer, hit, wo, 1); }},
+        {"stratified_sample", [] { stratified_sample(0, 1, Vec2(0.5)); }},
+        {"pixel_color", [&tracer] { pixel_color(tracer, 0, 0); }},
     };
 }
 

@@ -1,6 +1,7 @@
 #include "whitted/render.hpp"
 
 #include "whitted/engine/tiles.hpp"
+#include "whitted/labs.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -11,7 +12,14 @@ namespace whitted {
 
 RenderResult render(const Scene& scene, const RenderSettings& settings, int threads,
                     const ProgressCallback& progress) {
+    // Whitted ray tracing: one ray through each pixel centre. Distribution ray
+    // tracing (lab 7 on, samples asked for): lab 7's pixel_color averages samples.
+    const bool distribution = settings.samples_per_pixel > 0 && settings.stage >= stage_number(Stage::anti_aliasing);
     return render_pixels(scene.camera(), threads, progress, [&](RayStats& stats) -> PixelFunction {
+        if (distribution)
+            return [tracer = Tracer(scene, settings, stats)](double x, double y) {
+                return pixel_color(tracer, static_cast<int>(x), static_cast<int>(y)); // x, y: the pixel's centre
+            };
         return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
     });
 }

@@ -167,7 +167,6 @@ LoadedScene parse_p3f(TokenStream& tokens, const SceneLimits& limits) {
             const long long samples =
                 NumberReader(tokens, "'spp'", 1).integer("the samples per pixel", 0, kMostSamplesPerPixel);
             scene.data().samples_per_pixel = static_cast<int>(samples);
-            if (samples > 0) scene.warn(keyword, "anti-aliasing is not rendered yet: one ray through each pixel centre");
         } else if (word == "bclr") {
             scene.data().background = NumberReader(tokens, "'bclr'", 3).color("the background colour");
         } else if (word == "env") {

@@ -34,6 +34,7 @@ struct Tracer::Engine {
     Color path_weight{1.0};         // accumulated weight of the ray being traced
     std::uint32_t pixel_rays = 0;   // rays cast so far for the current pixel
     bool pixel_cut_short = false;
+    PixelSample sample;             // the pixel sample being traced
     int current_node = -1;          // the ray being shaded, in tree
 
     /// Whitted's adaptive depth control: a secondary ray too weak to change the pixel.
@@ -62,7 +63,7 @@ struct Tracer::Engine {
 };
 
 Tracer::Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats, RayTree* tree)
-    : engine_(std::make_unique<Engine>(Engine{scene, settings, stats, tree})) {}
+    : engine_(std::make_unique<Engine>(Engine{scene, settings, stats, tree, Color(1.0), 0, false, PixelSample{}, -1})) {}
 Tracer::Tracer(const Tracer& other) : engine_(std::make_unique<Engine>(*other.engine_)) {}
 Tracer& Tracer::operator=(const Tracer& other) {
     if (this != &other) engine_ = std::make_unique<Engine>(*other.engine_);
@@ -76,7 +77,7 @@ bool Tracer::records_tree() const { return engine_->tree != nullptr; }
 
 TracerState Tracer::state() const {
     const Engine& e = *engine_;
-    return {e.stats, e.path_weight, e.pixel_rays, e.pixel_cut_short};
+    return {e.stats, e.path_weight, e.pixel_rays, e.pixel_cut_short, e.sample};
 }
 
 void Tracer::restore(const TracerState& state) const {
@@ -85,7 +86,10 @@ void Tracer::restore(const TracerState& state) const {
     e.path_weight = state.path_weight;
     e.pixel_rays = state.pixel_rays;
     e.pixel_cut_short = state.pixel_cut_short;
+    e.sample = state.sample;
 }
+
+const PixelSample& Tracer::pixel_sample() const { return engine_->sample; }
 
 Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
     Engine& e = *engine_;
@@ -161,6 +165,11 @@ Color Tracer::trace_pixel(double x, double y) const {
     const Color color = trace(primary_ray(e.scene.camera(), x, y), 1, RayKind::eye, Color(1.0));
     if (e.pixel_cut_short) ++e.stats.pixels_cut_short;
     return color;
+}
+
+Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const {
+    engine_->sample = sample;
+    return trace_pixel(x, y);
 }
 
 bool Tracer::occluded(const Ray& ray, double distance) const {

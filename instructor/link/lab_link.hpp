@@ -43,8 +43,9 @@ enum class Op : std::uint16_t {
     mirror_direction, reflection,
     refracted_direction, refraction,
     fresnel_reflectance, fresnel_blend,
+    stratified_sample, pixel_color,
 };
-constexpr int kLastOp = static_cast<int>(Op::fresnel_blend);
+constexpr int kLastOp = static_cast<int>(Op::pixel_color);
 
 /// The lab (1..kLabCount, from the lab table) whose code answers `op`; 0 for none.
 int lab_of(Op op);

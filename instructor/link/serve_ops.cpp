@@ -135,6 +135,22 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         end_of(in);
         return out.put(fresnel_reflectance(cos_theta_i, eta_i, eta_t));
     }
+    case Op::stratified_sample: {
+        const int index = in.get<int>();
+        const int count = in.get<int>();
+        const Vec2 u = in.get<Vec2>();
+        end_of(in);
+        return out.put(stratified_sample(index, count, u));
+    }
+    case Op::pixel_color: {
+        const Tracer& tracer = link.incoming_tracer(in, op);
+        const int x = in.get<int>();
+        const int y = in.get<int>();
+        end_of(in);
+        const Color color = pixel_color(tracer, x, y);
+        out.put(tracer.state());
+        return out.put(color);
+    }
     }
     throw LinkError("a call of an unknown function");
 }

@@ -88,13 +88,14 @@ void Writer::put(const Material& m) {
 }
 void Writer::put(const PointLight& light) { put(light.position), put(light.color); }
 void Writer::put(const RenderSettings& s) {
-    put(s.stage), put(s.max_depth), put(s.min_weight), put(s.max_rays_per_pixel);
+    put(s.stage), put(s.max_depth), put(s.min_weight), put(s.max_rays_per_pixel), put(s.samples_per_pixel);
 }
 void Writer::put(const RayStats& s) {
     put(s.eye), put(s.shadow), put(s.reflected), put(s.refracted), put(s.pixels_cut_short);
 }
 void Writer::put(const TracerState& s) {
     put(s.stats), put(s.path_weight), put(s.pixel_rays), put(s.pixel_cut_short);
+    put(s.sample.x), put(s.sample.y), put(s.sample.index);
 }
 void Writer::put(const SceneData& d) {
     put(d.camera), put(d.background), put(d.ambient);
@@ -229,6 +230,8 @@ template <> RenderSettings Reader::get<RenderSettings>() {
     RenderSettings s;
     s.stage = get<int>(), s.max_depth = get<int>(), s.min_weight = get<double>();
     s.max_rays_per_pixel = get<std::uint32_t>();
+    s.samples_per_pixel = get<int>();
+    if (s.samples_per_pixel < 0 || s.samples_per_pixel > (1 << 16)) throw LinkError("settings with a bad sample count");
     return s;
 }
 template <> RayStats Reader::get<RayStats>() {
@@ -243,6 +246,7 @@ template <> TracerState Reader::get<TracerState>() {
     s.path_weight = get<Vec3>();
     s.pixel_rays = get<std::uint32_t>();
     s.pixel_cut_short = get<bool>();
+    s.sample.x = get<int>(), s.sample.y = get<int>(), s.sample.index = get<int>();
     return s;
 }
 template <> SceneData Reader::get<SceneData>() {

@@ -58,6 +58,9 @@ gallery=(
     "06_fresnel     snell_upside_down         06_fresnel     6"
     "06_fresnel     always_entering           06_fresnel     6"
     "06_fresnel     schlick                   06_fresnel     6 diff"
+    "07_anti_aliasing sum_not_averaged        07_anti_aliasing 7"
+    "07_anti_aliasing jitter_ignored          07_anti_aliasing 7 diff"
+    "07_anti_aliasing pixel_centre_added      07_anti_aliasing 7"
 )
 
 # Build the reference renderer and only the mistake renderers the gallery uses.
@@ -80,6 +83,9 @@ render() { # renderer scene stage output
 while IFS=$'\t' read -r number lab _; do
     render "$build/whitted" "$lab" "$number" "$out/${lab}_goal.png"
 done < <("$build/whitted" labs --tsv)
+
+# Lab 7's scene with one ray through each pixel centre, beside its goal.
+"$build/whitted" render scenes/07_anti_aliasing.p3f --stage 7 --spp 0 "${size[@]}" --quiet -o "$out/07_anti_aliasing_one_ray.png"
 
 # Gallery pictures.
 for entry in "${gallery[@]}"; do

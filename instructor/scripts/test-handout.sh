@@ -52,7 +52,7 @@ grep -q "mirror_direction() is not implemented yet" "$work/lab4.log" || fail "ma
 if make test LAB=three > /dev/null 2>&1; then fail "make test LAB=three was accepted"; fi
 
 echo "test-handout: 4. every lab done"
-cp "$root"/solution/0[456]_*.cpp labs/
+cp "$root"/solution/[0-9][0-9]_*.cpp labs/ # every lab, whatever their number
 make test > "$work/test2.log" 2>&1 || { tail -40 "$work/test2.log"; fail "make test failed with every lab done"; }
 grep -A12 "^Lab progress" "$work/test2.log"
 # Every progress line says ok: a skipped test (one that cannot run here) is no failure.

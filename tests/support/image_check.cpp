@@ -67,6 +67,7 @@ void expect_matches_reference(const ImageCheck& check) {
     RenderSettings settings;
     settings.stage = check.stage;
     settings.max_depth = loaded.data.max_depth;
+    settings.samples_per_pixel = loaded.data.samples_per_pixel;
     const Scene scene(std::move(loaded.data));
     Image rendered = render(scene, settings, 2).image;
 

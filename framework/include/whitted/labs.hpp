@@ -70,4 +70,16 @@ double fresnel_reflectance(double cos_theta_i, double eta_i, double eta_t);
 /// Reflected and refracted light of a dielectric, weighted Kr and (1 - Kr) T.
 Color fresnel_blend(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth);
 
+// ---- Lab 7: anti-aliasing (07_anti_aliasing.cpp) ----------------------------
+/// Where sample `index` (0..count-1) of `count` lies in its pixel, as (x, y) in
+/// [0, 1)^2: in cell `index` of a grid of cols x rows equal cells (rows = the
+/// largest divisor of count that is at most sqrt(count), cols = count / rows;
+/// cells numbered row by row from the bottom left), at the place u within the cell.
+Vec2 stratified_sample(int index, int count, Vec2 u);
+/// The colour of pixel (x, y) (column from the left, row from the bottom): the
+/// average of tracer.settings().samples_per_pixel samples; sample k is traced
+/// with tracer.trace_sample({x, y, k}, ...) through the place stratified_sample
+/// gives it for the numbers sample_numbers({x, y, k}, SampleUse::pixel).
+Color pixel_color(const Tracer& tracer, int x, int y);
+
 } // namespace whitted

@@ -10,6 +10,7 @@
 
 #include "whitted/lab_table.hpp"
 #include "whitted/ray_tree.hpp"
+#include "whitted/sampling.hpp"
 #include "whitted/scene.hpp"
 
 #include <cstdint>
@@ -23,7 +24,7 @@ struct RayStats {
     std::uint64_t shadow = 0;
     std::uint64_t reflected = 0;
     std::uint64_t refracted = 0;
-    std::uint64_t pixels_cut_short = 0; // pixels whose ray tree reached RenderSettings::max_rays_per_pixel
+    std::uint64_t pixels_cut_short = 0; // pixels (or pixel samples) whose ray tree reached RenderSettings::max_rays_per_pixel
 
     std::uint64_t total() const { return eye + shadow + reflected + refracted; }
     /// Counts one ray of the given kind.
@@ -44,6 +45,10 @@ struct RenderSettings {
     // depth with min_weight 0): once a pixel has cast this many rays, its
     // further secondary rays see black and the pixel is counted as cut short.
     std::uint32_t max_rays_per_pixel = 10000;
+    // Distribution ray tracing (P3F `spp`), from the anti-aliasing stage on:
+    // 0 traces one ray through each pixel centre (Whitted); n > 0 averages n
+    // samples a pixel (lab 7's pixel_color), each with its own ray budget.
+    int samples_per_pixel = 0;
 };
 
 /// What a tracer carries from ray to ray within one pixel: handed across the
@@ -54,6 +59,7 @@ struct TracerState {
     Color path_weight{1.0};
     std::uint32_t pixel_rays = 0;
     bool pixel_cut_short = false;
+    PixelSample sample;            // the pixel sample being traced (its random numbers)
 };
 
 class Tracer {
@@ -74,8 +80,18 @@ class Tracer {
     /// accumulated weight is too small to matter (see RenderSettings::min_weight).
     Color trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const;
 
-    /// The colour of the pixel sample at viewport position (x, y) (see primary_ray).
+    /// The colour seen through viewport position (x, y) (see primary_ray): one
+    /// eye ray, with a ray budget of its own. Whitted ray tracing calls it with
+    /// each pixel's centre.
     Color trace_pixel(double x, double y) const;
+
+    /// The colour of one sample of a pixel, seen through viewport position (x, y)
+    /// inside that pixel: like trace_pixel, and the sample's random numbers (for
+    /// the lens, the lights) are those of `sample`.
+    Color trace_sample(const PixelSample& sample, double x, double y) const;
+
+    /// The pixel sample being traced (set by trace_sample; pixel (0, 0), sample 0 before).
+    const PixelSample& pixel_sample() const;
 
     /// Starts a new pixel: its ray budget, path weight and cut-short mark from
     /// the start. trace_pixel() does this itself; code that casts a pixel's rays
