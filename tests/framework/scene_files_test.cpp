@@ -74,6 +74,22 @@ TEST(SceneFiles, DirectoryIsAnError) {
     EXPECT_EQ(load_error(path), path.string() + ": cannot open a directory as a scene file");
 }
 
+TEST(SceneFiles, TheCourseFeaturesSceneReadsEveryKeywordAsTheCourseMeansIt) {
+    // scenes/course_features.p3f: accel, spp, env, bclr, the thin lens and shutter, a
+    // twelfth material number, a mesh with negative indices, comments after numbers.
+    const LoadedScene scene = load_scene(fs::path(WHITTED_SOURCE_DIR) / "scenes" / "course_features.p3f");
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_EQ(scene.data.acceleration, Acceleration::bvh);
+    EXPECT_EQ(scene.data.samples_per_pixel, 9);
+    EXPECT_TRUE(scene.data.skybox);
+    EXPECT_EQ(scene.data.camera.aperture, 0.0);
+    EXPECT_EQ(scene.data.camera.focal_ratio, 1.0);
+    EXPECT_EQ(scene.data.lights.size(), 2u);
+    EXPECT_EQ(scene.data.materials.size(), 4u);
+    // a plane, a sphere, a box and the four triangles of the mesh
+    EXPECT_EQ(scene.data.primitives.size(), 7u);
+}
+
 TEST(SceneFiles, EverySpdSceneLoadsWithTheExpectedContent) {
     const fs::path directory = fs::path(WHITTED_SOURCE_DIR) / ".." / "shared" / "scenes" / "spd";
     if (!fs::is_directory(directory)) GTEST_SKIP() << "no SPD scenes at " << directory;
