@@ -41,10 +41,13 @@ void read_viewpoint(SceneBuilder& scene, const Token& keyword) {
     if (tokens.peek().text == "time0") {
         const Token word = tokens.next();
         const double time0 = NumberReader(tokens, "'time0'", 1).number("the shutter's opening time");
-        if (tokens.peek().text != "time1") tokens.fail(tokens.peek(), "expected 'time1' after 'time0 " + format_number(time0) + "', found " + describe(tokens.peek()));
+        if (tokens.peek().text != "time1")
+            tokens.fail(tokens.peek(), "expected 'time1' after 'time0 " + format_number(time0) + "', found " +
+                                           describe(tokens.peek()));
         tokens.next();
         const double time1 = NumberReader(tokens, "'time1'", 1).number("the shutter's closing time");
-        if (time1 < time0) tokens.fail(word, "expected time0 <= time1, found " + format_number(time0) + " > " + format_number(time1));
+        if (time1 < time0)
+            tokens.fail(word, "expected time0 <= time1, found " + format_number(time0) + " > " + format_number(time1));
         if (time1 > time0) scene.warn(word, "motion blur is not rendered (the shutter is treated as instantaneous)");
     }
     scene.set_camera(view, view.angle);

@@ -34,7 +34,7 @@ struct Tracer::Engine {
     Color path_weight{1.0};         // accumulated weight of the ray being traced
     std::uint32_t pixel_rays = 0;   // rays cast so far for the current pixel
     bool pixel_cut_short = false;
-    PixelSample sample;             // the pixel sample being traced
+    PixelSample sample{};           // the pixel sample being traced
     int current_node = -1;          // the ray being shaded, in tree
 
     /// Whitted's adaptive depth control: a secondary ray too weak to change the pixel.
@@ -63,7 +63,7 @@ struct Tracer::Engine {
 };
 
 Tracer::Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats, RayTree* tree)
-    : engine_(std::make_unique<Engine>(Engine{scene, settings, stats, tree, Color(1.0), 0, false, PixelSample{}, -1})) {}
+    : engine_(std::make_unique<Engine>(Engine{scene, settings, stats, tree})) {}
 Tracer::Tracer(const Tracer& other) : engine_(std::make_unique<Engine>(*other.engine_)) {}
 Tracer& Tracer::operator=(const Tracer& other) {
     if (this != &other) engine_ = std::make_unique<Engine>(*other.engine_);

@@ -270,11 +270,12 @@ template <> SceneData Reader::get<SceneData>() {
             face.width = get<int>(), face.height = get<int>();
             const std::string rgb = get<std::string>();
             face.rgb.assign(rgb.begin(), rgb.end());
-            if (face.width < 1 || face.height < 1 ||
-                face.rgb.size() != static_cast<std::size_t>(face.width) * static_cast<std::size_t>(face.height) * 3)
-                throw LinkError("a skybox face with a bad size");
         }
-        d.skybox = std::make_shared<const Skybox>(std::move(faces));
+        try { // the skybox checks each face's size against its values
+            d.skybox = std::make_shared<const Skybox>(std::move(faces));
+        } catch (const std::invalid_argument&) {
+            throw LinkError("a skybox face with a bad size");
+        }
     }
     return d;
 }

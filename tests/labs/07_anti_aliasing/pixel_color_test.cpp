@@ -15,34 +15,6 @@ using namespace whitted::testing_helpers;
 
 namespace {
 
-// A camera at the origin looking down -z at an 8 x 8 image, the view plane 1 away
-// and 2 wide (fovy 90 degrees): viewport x maps to x_world = (x / 8 - 0.5) * 2 at
-// z = -1, so at depth 10 the viewport line x = X is the world line x = (X / 8 - 0.5) * 20.
-Camera eight_by_eight() { return Camera::create(Point3(0.0), Point3(0.0, 0.0, -1.0), Vec3(0.0, 1.0, 0.0), 90.0, 8, 8); }
-
-/// A black wall at depth 10 covering everything left of the viewport line x = edge
-/// (in a band around the middle rows), in front of a white background; no lights.
-SceneData black_left_of(double edge) {
-    SceneData data;
-    data.camera = eight_by_eight();
-    data.background = Color(1.0);
-    Material black;
-    black.color = Color(0.0);
-    black.diffuse = 0.0;
-    data.materials = {black};
-    const double x = (edge / 8.0 - 0.5) * 20.0;
-    data.primitives.push_back({Triangle{Point3(x, -40.0, -10.0), Point3(x, 40.0, -10.0), Point3(x - 80.0, 0.0, -10.0)}, 0});
-    return data;
-}
-
-/// Settings for the anti-aliasing stage with `samples` a pixel.
-RenderSettings with_samples(int samples) {
-    RenderSettings settings;
-    settings.stage = stage_number(Stage::anti_aliasing);
-    settings.samples_per_pixel = samples;
-    return settings;
-}
-
 /// A lit, tilted floor filling the lower half of the image: its shading changes
 /// across every pixel, so each sample's exact place shows in the colour.
 SceneData shaded_floor() {
@@ -58,11 +30,8 @@ SceneData shaded_floor() {
 
 /// The grid the handout describes.
 Vec2 expected_place(int k, int count, Vec2 u) {
-    int rows = 1;
-    for (int r = 1; r * r <= count; ++r)
-        if (count % r == 0) rows = r;
-    const int cols = count / rows;
-    return Vec2((k % cols + u.x) / cols, (k / cols + u.y) / rows);
+    const SampleGrid grid = sample_grid(count);
+    return Vec2((k % grid.cols + u.x) / grid.cols, (k / grid.cols + u.y) / grid.rows);
 }
 
 } // namespace

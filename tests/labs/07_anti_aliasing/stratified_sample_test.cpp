@@ -3,23 +3,16 @@
 // cell k (row by row from the bottom left), at the place u within the cell.
 #include "whitted/labs.hpp"
 
+#include "lab_helpers.hpp"
+
 #include <gtest/gtest.h>
 
+#include <string>
 
 using namespace whitted;
+using namespace whitted::testing_helpers;
 
 namespace {
-
-/// The grid of `count` cells the handout describes: rows is the largest divisor of count up to sqrt(count).
-struct Grid {
-    int cols, rows;
-};
-Grid grid_for(int count) {
-    int rows = 1;
-    for (int r = 1; r * r <= count; ++r)
-        if (count % r == 0) rows = r;
-    return {count / rows, rows};
-}
 
 void expect_place(Vec2 got, double x, double y, const std::string& what) {
     EXPECT_NEAR(got.x, x, 1e-15) << what << ": x";
@@ -64,7 +57,7 @@ TEST(StratifiedSample, OneSampleIsAnywhereInThePixel) {
 TEST(StratifiedSample, EverySampleLiesInItsOwnCellOfThePixel) {
     const Vec2 places[] = {{0.0, 0.0}, {0.999999, 0.999999}, {0.5, 0.1}, {0.123, 0.987}};
     for (int count = 1; count <= 36; ++count) {
-        const Grid grid = grid_for(count);
+        const SampleGrid grid = sample_grid(count);
         for (int k = 0; k < count; ++k) {
             for (const Vec2& u : places) {
                 const Vec2 p = stratified_sample(k, count, u);

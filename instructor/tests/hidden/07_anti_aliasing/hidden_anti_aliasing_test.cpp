@@ -3,6 +3,7 @@
 #include "whitted/labs.hpp"
 
 #include "image_check.hpp"
+#include "lab_helpers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,23 +30,11 @@ TEST(HiddenStratifiedSample, LargerAndOddGrids) {
 }
 
 TEST(HiddenPixelColor, SixteenSamplesSeeAQuarterOfThePixel) {
-    // A camera at the origin looking down -z, 8 x 8 pixels, view plane 2 wide at distance 1;
-    // a black wall at depth 10 left of viewport x = 2.25 (a quarter into column 2), white sky:
+    // The black wall left of viewport x = 2.25 (a quarter into column 2), white sky:
     // 4 of 16 samples (one column of the 4 x 4 grid) are black.
-    SceneData data;
-    data.camera = Camera::create(Point3(0.0), Point3(0.0, 0.0, -1.0), Vec3(0.0, 1.0, 0.0), 90.0, 8, 8);
-    data.background = Color(1.0);
-    Material black;
-    black.color = Color(0.0);
-    black.diffuse = 0.0;
-    data.materials = {black};
-    const double x = (2.25 / 8.0 - 0.5) * 20.0;
-    data.primitives.push_back({Triangle{Point3(x, -40.0, -10.0), Point3(x, 40.0, -10.0), Point3(x - 80.0, 0.0, -10.0)}, 0});
-    const Scene scene(data);
-    RenderSettings settings;
-    settings.stage = stage_number(Stage::anti_aliasing);
-    settings.samples_per_pixel = 16;
+    const Scene scene(black_left_of(2.25));
     RayStats stats;
+    const RenderSettings settings = with_samples(16);
     const Tracer tracer(scene, settings, stats);
     EXPECT_NEAR(pixel_color(tracer, 2, 3).g, 0.75, 1e-12);
     EXPECT_NEAR(pixel_color(tracer, 2, 4).g, 0.75, 1e-12);
