@@ -107,6 +107,9 @@ int run_render(const RenderOptions& options) {
     if (settings.samples_per_pixel > 0 && settings.stage < stage_number(Stage::anti_aliasing) && !options.pass)
         std::fprintf(stderr, "note: %d samples per pixel need lab 7 (anti-aliasing); stage %d traces one ray through "
                              "each pixel centre\n", settings.samples_per_pixel, settings.stage);
+    if (!loaded.data.area_lights.empty() && settings.stage < stage_number(Stage::soft_shadows))
+        std::fprintf(stderr, "note: area lights need lab 8 (soft shadows); stage %d lights with a point at the centre "
+                             "of each\n", settings.stage);
     const double parse_seconds = seconds_since(load_start);
     const auto build_start = std::chrono::steady_clock::now();
     const Scene scene(std::move(loaded.data), linked_leaf_kernels());

@@ -61,6 +61,10 @@ gallery=(
     "07_anti_aliasing sum_not_averaged        07_anti_aliasing 7"
     "07_anti_aliasing jitter_ignored          07_anti_aliasing 7 diff"
     "07_anti_aliasing pixel_centre_added      07_anti_aliasing 7"
+    "08_soft_shadows  colour_not_shared       08_soft_shadows  8"
+    "08_soft_shadows  centre_only             08_soft_shadows  8"
+    "08_soft_shadows  jitter_ignored          08_soft_shadows  8 diff"
+    "08_soft_shadows  corner_at_the_centre    08_soft_shadows  8"
 )
 
 # Build the reference renderer and only the mistake renderers the gallery uses.
@@ -86,6 +90,10 @@ done < <("$build/whitted" labs --tsv)
 
 # Lab 7's scene with one ray through each pixel centre, beside its goal.
 "$build/whitted" render scenes/07_anti_aliasing.p3f --stage 7 --spp 0 "${size[@]}" --quiet -o "$out/07_anti_aliasing_one_ray.png"
+
+# Lab 8's scene lit by a point light at the lamp's centre (stage 7), and its shadow pass.
+"$build/whitted" render scenes/08_soft_shadows.p3f --stage 7 "${size[@]}" --quiet -o "$out/08_soft_shadows_point_light.png"
+"$build/whitted" render scenes/08_soft_shadows.p3f --stage 8 --pass shadow "${size[@]}" --quiet -o "$out/08_soft_shadows_shadow_pass.png"
 
 # Gallery pictures.
 for entry in "${gallery[@]}"; do

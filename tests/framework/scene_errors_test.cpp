@@ -251,6 +251,24 @@ TEST(SceneErrors, P3fShutterClosingBeforeItOpensIsAnError) {
                  "scene.p3f:1:65: expected time0 <= time1", "1 > 0");
 }
 
+TEST(SceneErrors, AnAreaLightNeedsTwoEdgesThatSpanAnArea) {
+    EXPECT_EQ(p3f_error("arealight 0 5 0 1 1 1 1 0 0 2 0 0 4"),
+              "scene.p3f:2:1: expected two edges that span a parallelogram after 'arealight', found edges along one line "
+              "(a light without area is a point light: 'l')");
+    EXPECT_EQ(p3f_error("arealight 0 5 0 1 1 1 0 0 0 0 0 1 4"),
+              "scene.p3f:2:1: expected two edges that span a parallelogram after 'arealight', found edges along one line "
+              "(a light without area is a point light: 'l')");
+}
+
+TEST(SceneErrors, AnAreaLightsSampleCountIsAWholeNumberFromOne) {
+    expect_error(p3f_error("arealight 0 5 0 1 1 1 1 0 0 0 0 1 0"),
+                 "scene.p3f:2:35: expected a whole number from 1 to 4096 for the area light's sample count", "'0'");
+    expect_error(p3f_error("arealight 0 5 0 1 1 1 1 0 0 0 0 1 5000"),
+                 "scene.p3f:2:35: expected a whole number from 1 to 4096 for the area light's sample count", "'5000'");
+    expect_error(p3f_error("arealight 0 5 0 1 1 1 1 0 0 0 0 1"),
+                 "scene.p3f:2:34: expected 1 more number for 'arealight'", "end of file");
+}
+
 TEST(SceneErrors, CheckerBeforeAnyMaterialIsAnError) {
     expect_error(nff_error("checker 1 0 0 0 1 1 1"), "scene.nff:2:1: expected a material 'f' before 'checker'", "none");
 }

@@ -280,6 +280,36 @@ TEST(P3fLoader, SppZeroIsWhittedRayTracing) {
     EXPECT_EQ(p3f_body("spp 65536").data.samples_per_pixel, 65536);
 }
 
+TEST(P3fLoader, AnAreaLightIsAParallelogramWithASampleCount) {
+    // The extension `arealight centre colour edge_u edge_v samples`, in both dialects.
+    const auto scene = p3f_body("arealight 0 7 0  1 0.9 0.8  3 0 0  0 0 2  16");
+    ASSERT_EQ(scene.data.area_lights.size(), 1u);
+    const AreaLight& light = scene.data.area_lights[0];
+    expect_vec(light.center, {0, 7, 0});
+    expect_vec(light.color, {1, 0.9, 0.8});
+    expect_vec(light.edge_u, {3, 0, 0});
+    expect_vec(light.edge_v, {0, 0, 2});
+    EXPECT_EQ(light.samples, 16);
+    EXPECT_TRUE(scene.data.lights.empty()) << "an area light is not one of the point lights";
+    EXPECT_EQ(nff_body("arealight 1 2 3 1 1 1 1 0 0 0 1 0 4").data.area_lights.size(), 1u);
+}
+
+TEST(P3fLoader, TheSceneNumbersTheAreaLightsPoints) {
+    // Each light's points draw their own sample numbers: the second light's start after the first's.
+    const Scene scene(p3f_body("arealight 0 7 0 1 1 1 1 0 0 0 0 1 16\narealight 3 7 0 1 1 1 1 0 0 0 0 1 9\n"
+                               "arealight 6 7 0 1 1 1 1 0 0 0 0 1 1").data);
+    ASSERT_EQ(scene.area_lights().size(), 3u);
+    EXPECT_EQ(scene.area_lights()[0].first_number, 0u);
+    EXPECT_EQ(scene.area_lights()[1].first_number, 16u);
+    EXPECT_EQ(scene.area_lights()[2].first_number, 25u);
+}
+
+TEST(NffLoader, AreaLightsCountForTheDefaultIntensityOfUncolouredLights) {
+    // Haines' rule over every light: 2 lights give sqrt(2) / 4 to the uncoloured one.
+    const auto scene = nff_body("l 1 2 3\narealight 0 5 0 1 1 1 1 0 0 0 0 1 4");
+    EXPECT_NEAR(scene.data.lights.at(0).color.r, std::sqrt(2.0) / 4.0, 1e-15);
+}
+
 TEST(P3fLoader, BclrSetsTheBackgroundColour) {
     expect_vec(p3f_body("bclr 0.34 0.55 0.85").data.background, {0.34, 0.55, 0.85});
 }

@@ -133,3 +133,15 @@ TEST(Lambert, TracedEyeRaySeesTheShadowOfASphere) {
         << "the point under the sphere is in its shadow";
     EXPECT_TRUE(near(trace_one(scene, Ray{Point3(1, 0, 1), -kUp}, 2), Color(4.0 / std::sqrt(17.0)), 1e-12));
 }
+
+TEST(Lambert, LightsComeFromTheTracer) {
+    // A lamp with a size (`arealight`) lights through tracer.lights(); before lab 8 it is one
+    // point light at its centre with all its colour. Straight above the origin: n . L = 1, so
+    // (0.8, 0.6, 0.4) x kd = (0.24, 0.36, 0.06).
+    SceneData data = scene_data_of({floor_z0()}, kMaterial, {});
+    data.area_lights = {AreaLight{Point3(0.0, 0.0, 4.0), Color(0.8, 0.6, 0.4), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0), 4}};
+    const Scene scene(data);
+    const TestTracer t(scene, 2);
+    EXPECT_TRUE(near(lambert(t.tracer, kOrigin), {0.24, 0.36, 0.06}, 1e-12))
+        << "loop over tracer.lights(): scene.point_lights() leaves out the scene's area lights";
+}

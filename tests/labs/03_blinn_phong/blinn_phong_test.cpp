@@ -152,3 +152,15 @@ TEST(BlinnPhong, TracedEyeRayAtStage3UsesWoFromTheRay) {
     const Color c = trace_one(scene, Ray{Point3(-3, 0, 3), glm::normalize(Vec3(1, 0, -1))}, 3);
     EXPECT_TRUE(near(c, Color(0.2 * cos_deg(45.0) + 0.5), 1e-12));
 }
+
+TEST(BlinnPhong, LightsComeFromTheTracer) {
+    // A lamp with a size (`arealight`) lights through tracer.lights(); before lab 8 it is one
+    // point light at its centre. Matte floor, lamp straight above: Ia kd + kd (n . L = 1).
+    const Material matte = shiny_material(Color(0.5, 0.4, 0.2), 0.8);
+    SceneData data = scene_data_of({floor_z0()}, matte, {}, kAmbient);
+    data.area_lights = {AreaLight{Point3(0.0, 0.0, 3.0), Color(1.0), Vec3(0.5, 0.0, 0.0), Vec3(0.0, 0.5, 0.0), 9}};
+    const Scene scene(data);
+    const TestTracer t(scene, 3);
+    EXPECT_TRUE(near(blinn_phong(t.tracer, surface_hit(Point3(0.0), kUp), kUp), kAmbient * kKd + kKd, 1e-12))
+        << "loop over tracer.lights(): scene.point_lights() leaves out the scene's area lights";
+}
