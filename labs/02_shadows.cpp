@@ -21,6 +21,7 @@ bool is_lit(const Tracer& tracer, const Hit& hit, const PointLight& light) {
 
 // The diffuse light at the hit point: the sum over the lights that reach it of
 // light colour x kd x (n . L), where kd = material.diffuse * material.color_at(point).
+// The lights are tracer.lights() (each a PointLight with a position and a colour).
 // Lights behind the surface (n . L <= 0) give nothing and need no shadow feeler.
 Color lambert(const Tracer& tracer, const Hit& hit) {
     not_implemented();

@@ -9,7 +9,8 @@ namespace whitted {
 //   I = I_ambient x kd + sum f_s (I_light x kd (n . L) + I_light x ks (h . n)^shininess)
 // with kd = material.diffuse * material.color_at(point),
 //      ks = material.specular * material.specular_color,
-//      h  = the halfway vector between L and wo, f_s = 0 in shadow, 1 otherwise.
+//      h  = the halfway vector between L and wo, f_s = 0 in shadow, 1 otherwise,
+// and the lights tracer.lights().
 Color blinn_phong(const Tracer& tracer, const Hit& hit, const Vec3& wo) {
     not_implemented();
 }

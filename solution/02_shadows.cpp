@@ -28,7 +28,7 @@ Color lambert(const Tracer& tracer, const Hit& hit) {
     const Material& material = scene.material(hit);
     const Color kd = material.diffuse * material.color_at(hit.point);
     Color color(0.0);
-    for (const PointLight& light : scene.lights()) {
+    for (const PointLight& light : tracer.lights()) {
         const Vec3 to_light = light.position - hit.point;
         if (to_light == Vec3(0.0)) continue; // a light on the surface itself lights nothing
         const Vec3 wi = glm::normalize(to_light);

@@ -12,7 +12,7 @@ Color blinn_phong(const Tracer& tracer, const Hit& hit, const Vec3& wo) {
     const Color ks = material.specular * material.specular_color;
     // I = I_a kd + sum over lights of f_s (I_l kd (n . L) + I_l ks (h . n)^shininess)
     Color color = scene.ambient() * kd;
-    for (const PointLight& light : scene.lights()) {
+    for (const PointLight& light : tracer.lights()) {
         const Vec3 to_light = light.position - hit.point;
         if (to_light == Vec3(0.0)) continue; // a light on the surface itself lights nothing
         const Vec3 wi = glm::normalize(to_light);

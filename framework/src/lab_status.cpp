@@ -32,8 +32,9 @@ std::map<std::string_view, std::function<void()>> lab_probes(const Scene& scene,
     const Ray ray{Point3(0.0, 0.0, 5.0), Vec3(0.0, 0.0, -1.0)};
     const Hit hit = make_hit(ray, 5.0, Vec3(0.0, 0.0, 1.0));
     const Vec3 wo(0.0, 0.0, 1.0), n(0.0, 0.0, 1.0);
-    if (scene.lights().empty()) throw std::invalid_argument("lab_probes: the scene needs a light");
-    const PointLight& light = scene.lights()[0];
+    if (scene.point_lights().empty()) throw std::invalid_argument("lab_probes: the scene needs a light");
+    const PointLight& light = scene.point_lights()[0];
+    const AreaLight area_light{light.position, light.color, Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0), 1, 0};
     return {
         {"primary_ray", [&scene] { primary_ray(scene.camera(), 0.5, 0.5); }},
         {"intersect_sphere", [=] { intersect_sphere(ray, Sphere{Point3(0.0), 1.0}, Interval{}); }},
@@ -52,6 +53,8 @@ std::map<std::string_view, std::function<void()>> lab_probes(const Scene& scene,
         {"fresnel_blend", [=, &tracer] { fresnel_blend(tracer, hit, wo, 1); }},
         {"stratified_sample", [] { stratified_sample(0, 1, Vec2(0.5)); }},
         {"pixel_color", [&tracer] { pixel_color(tracer, 0, 0); }},
+        {"point_on_light", [=] { point_on_light(area_light, Vec2(0.5)); }},
+        {"light_samples", [=, &tracer] { light_samples(tracer, area_light); }},
     };
 }
 

@@ -56,14 +56,16 @@ struct Probe {
     RayTree tree;
     Tracer tracer;
     Tracer feelers;
-    Probe(const Scene& scene, const RenderSettings& settings, RayStats& stats)
-        : tracer(scene, settings, stats, &tree), feelers(scene, settings, stats) {}
+    // `traced`: how far the tree goes; the feelers see the lights as `settings` ask (area lights sampled from lab 8).
+    Probe(const Scene& scene, const RenderSettings& traced, const RenderSettings& settings, RayStats& stats)
+        : tracer(scene, traced, stats, &tree), feelers(scene, settings, stats) {}
 };
 
-// At the eye ray's hit: white when every light in front of the surface reaches it, black when none does.
+// At the eye ray's hit: white when every light in front of the surface reaches it, black when none does,
+// and the fraction of the points that reach it in the penumbra of area lights (lab 8).
 Color shadow_pixel(const Tracer& tracer, const Hit& hit) {
     int facing = 0, lit = 0;
-    for (const PointLight& light : tracer.scene().lights()) {
+    for (const PointLight& light : tracer.lights()) {
         if (glm::dot(hit.normal, light.position - hit.point) <= 0.0) continue;
         ++facing;
         if (is_lit(tracer, hit, light)) ++lit;
@@ -116,7 +118,8 @@ Color pass_pixel(Pass pass, const Scene& scene, const RenderSettings& settings, 
         return material.diffuse * material.color_at(hit.point);
     }
     case Pass::shadow:
-        probe.feelers.begin_pixel(); // its own budget for this pixel's feelers: it never runs trace_pixel()
+        // Its own budget for this pixel's feelers (it never runs trace_pixel()), and the eye ray's pixel sample.
+        probe.feelers.begin_pixel(probe.tracer.pixel_sample());
         return shadow_pixel(probe.feelers, hit);
     case Pass::fresnel: return fresnel_pixel(scene, eye);
     case Pass::object_id: {
@@ -147,7 +150,7 @@ PassResult render_pass(const Scene& scene, const RenderSettings& settings, Pass 
     if (!whole_tree) traced.stage = stage_number(Stage::ray_casting);
     PassResult result;
     result.render = render_pixels(scene.camera(), threads, progress, [&](RayStats& stats) -> PixelFunction {
-        auto probe = std::make_shared<Probe>(scene, traced, stats);
+        auto probe = std::make_shared<Probe>(scene, traced, settings, stats);
         return [&scene, &settings, pass, probe](double x, double y) {
             probe->tracer.trace_pixel(x, y);
             return pass_pixel(pass, scene, settings, *probe);

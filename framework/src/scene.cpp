@@ -70,6 +70,12 @@ Scene::Scene(SceneData data, const LeafKernels* kernels)
         source_index_.push_back(unbounded_index[i]);
     }
     for (std::size_t i = 0; i < data_.primitives.size(); ++i) data_.primitives[i].index = static_cast<std::uint32_t>(i);
+    // Each area light's points draw numbers of their own: no two lights share them.
+    std::uint32_t next_number = 0;
+    for (AreaLight& light : data_.area_lights) {
+        light.first_number = next_number;
+        next_number += static_cast<std::uint32_t>(light.samples);
+    }
 }
 
 std::size_t Scene::acceleration_bytes() const { return bvh_->bytes(); }

@@ -9,7 +9,8 @@ namespace whitted::detail {
 
 namespace {
 
-constexpr int kDeepestRayTree = 100; // `maxdepth` limit: deeper trees only cost time (and stack)
+constexpr int kDeepestRayTree = 100;
+constexpr long long kMostLightSamples = 4096; // points an area light takes a pixel sample: 64 x 64 // `maxdepth` limit: deeper trees only cost time (and stack)
 
 /// Takes the next token, which must be `word`; `context` names the enclosing entity.
 Token expect_word(TokenStream& tokens, std::string_view word, std::string_view context) {
@@ -56,6 +57,8 @@ bool SceneBuilder::read_shared(const Token& keyword) {
         has_ambient_ = true;
     } else if (word == "checker") {
         read_checker(keyword);
+    } else if (word == "arealight") {
+        read_area_light(keyword);
     } else if (word == "maxdepth") {
         NumberReader numbers(tokens_, "'maxdepth'", 1);
         data().max_depth = static_cast<int>(numbers.integer("the deepest ray tree level", 1, kDeepestRayTree));
@@ -78,6 +81,21 @@ void SceneBuilder::read_checker(const Token& keyword) {
     Material patterned = data().materials.back();
     patterned.checker = checker;
     add_material(patterned);
+}
+
+void SceneBuilder::read_area_light(const Token& keyword) {
+    NumberReader numbers(tokens_, "'arealight'", 13);
+    AreaLight light;
+    light.center = numbers.vec3("the area light's centre");
+    light.color = numbers.color("the area light's colour");
+    light.edge_u = numbers.vec3("the area light's first edge");
+    light.edge_v = numbers.vec3("the area light's second edge");
+    const Vec3 normal = glm::cross(light.edge_u, light.edge_v);
+    if (!(max_abs_component(normal) > 0.0) || !std::isfinite(glm::length(normal)))
+        tokens_.fail(keyword, "expected two edges that span a parallelogram after 'arealight', found edges along one "
+                              "line (a light without area is a point light: 'l')");
+    light.samples = static_cast<int>(numbers.integer("the area light's sample count", 1, kMostLightSamples));
+    data().area_lights.push_back(light);
 }
 
 Viewpoint SceneBuilder::read_viewpoint(const Token& keyword) {
@@ -199,7 +217,7 @@ LoadedScene SceneBuilder::finish() {
     // The SPD rule (Haines' Readme) for scenes that give no intensities: each light,
     // and the ambient light, gets sqrt(N) / (2 N) for N lights.
     if (!uncoloured_lights_.empty()) {
-        const double n = static_cast<double>(data().lights.size());
+        const double n = static_cast<double>(data().lights.size() + data().area_lights.size());
         const double intensity = std::sqrt(n) / (2.0 * n);
         for (const std::size_t i : uncoloured_lights_) data().lights[i].color = Color(intensity);
         if (!has_ambient_) data().ambient = Color(intensity);

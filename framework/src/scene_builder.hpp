@@ -69,6 +69,7 @@ class SceneBuilder {
 
   private:
     void read_checker(const Token& keyword);
+    void read_area_light(const Token& keyword);
 
     TokenStream& tokens_;
     SceneLimits limits_;

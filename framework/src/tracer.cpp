@@ -2,6 +2,7 @@
 
 #include "whitted/labs.hpp"
 
+#include <cmath>
 #include <utility>
 
 namespace whitted {
@@ -36,6 +37,8 @@ struct Tracer::Engine {
     bool pixel_cut_short = false;
     PixelSample sample{};           // the pixel sample being traced
     int current_node = -1;          // the ray being shaded, in tree
+    std::vector<PointLight> lights{}; // lights() with area lights, for the sample `lights_for`
+    std::optional<PixelSample> lights_for{};
 
     /// Whitted's adaptive depth control: a secondary ray too weak to change the pixel.
     bool too_weak(RayKind kind, const Color& weight) const {
@@ -90,6 +93,26 @@ void Tracer::restore(const TracerState& state) const {
 }
 
 const PixelSample& Tracer::pixel_sample() const { return engine_->sample; }
+
+std::span<const PointLight> Tracer::lights() const {
+    Engine& e = *engine_;
+    if (e.scene.area_lights().empty()) return e.scene.point_lights(); // nothing to add: no copy
+    // Sampled once a pixel sample: every hit of its ray tree sees the same points.
+    const bool sampled = e.settings.stage >= stage_number(Stage::soft_shadows);
+    if (e.lights_for && (!sampled || *e.lights_for == e.sample)) return e.lights;
+    std::vector<PointLight> lights(e.scene.point_lights().begin(), e.scene.point_lights().end());
+    for (const AreaLight& light : e.scene.area_lights()) {
+        if (!sampled) {
+            lights.push_back(PointLight{light.center, light.color});
+            continue;
+        }
+        const std::vector<PointLight> points = light_samples(*this, light);
+        lights.insert(lights.end(), points.begin(), points.end());
+    }
+    e.lights = std::move(lights);
+    e.lights_for = e.sample;
+    return e.lights;
+}
 
 Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
     Engine& e = *engine_;
@@ -150,26 +173,28 @@ Color Tracer::Engine::shade(const Tracer& tracer, const Ray& ray, int depth) {
     return color;
 }
 
-void Tracer::begin_pixel() const {
+void Tracer::begin_pixel(const PixelSample& sample) const {
     Engine& e = *engine_;
+    e.sample = sample;
     e.path_weight = Color(1.0);
     e.pixel_rays = 0;
     e.pixel_cut_short = false;
 }
 
 Color Tracer::trace_pixel(double x, double y) const {
+    // Sample 0 of the pixel that contains (x, y) (pixel 0 for a position no pixel has).
+    const auto pixel = [](double v) { return v > -1e9 && v < 1e9 ? static_cast<int>(std::floor(v)) : 0; };
+    return trace_sample(PixelSample{pixel(x), pixel(y), 0}, x, y);
+}
+
+Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const {
     Engine& e = *engine_;
-    begin_pixel();
+    begin_pixel(sample);
     if (e.tree) e.tree->clear();
     e.current_node = -1;
     const Color color = trace(primary_ray(e.scene.camera(), x, y), 1, RayKind::eye, Color(1.0));
     if (e.pixel_cut_short) ++e.stats.pixels_cut_short;
     return color;
-}
-
-Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const {
-    engine_->sample = sample;
-    return trace_pixel(x, y);
 }
 
 bool Tracer::occluded(const Ray& ray, double distance) const {

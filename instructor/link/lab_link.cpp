@@ -23,7 +23,7 @@ enum class ExceptionKind : std::uint8_t { not_implemented = 1, std_exception = 2
 bool takes_tracer(Op op) {
     switch (op) {
     case Op::is_lit: case Op::lambert: case Op::blinn_phong: case Op::reflection: case Op::refraction:
-    case Op::fresnel_blend: return true;
+    case Op::fresnel_blend: case Op::light_samples: return true;
     default: return false;
     }
 }
@@ -42,7 +42,7 @@ constexpr std::array<std::string_view, kLastOp + 1> kFunctionNames{
     "?", "primary_ray", "intersect_sphere", "intersect_plane", "intersect_triangle", "closest_hit",
     "Scene::closest_hit", "Scene::occluded", "spawn_ray", "is_lit", "lambert", "blinn_phong",
     "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
-    "fresnel_blend", "stratified_sample", "pixel_color"};
+    "fresnel_blend", "stratified_sample", "pixel_color", "point_on_light", "light_samples"};
 constexpr bool every_op_named() {
     for (std::string_view name : kFunctionNames)
         if (name.empty()) return false;

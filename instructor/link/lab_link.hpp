@@ -44,8 +44,9 @@ enum class Op : std::uint16_t {
     refracted_direction, refraction,
     fresnel_reflectance, fresnel_blend,
     stratified_sample, pixel_color,
+    point_on_light, light_samples,
 };
-constexpr int kLastOp = static_cast<int>(Op::pixel_color);
+constexpr int kLastOp = static_cast<int>(Op::light_samples);
 
 /// The lab (1..kLabCount, from the lab table) whose code answers `op`; 0 for none.
 int lab_of(Op op);

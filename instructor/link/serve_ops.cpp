@@ -151,6 +151,20 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         out.put(tracer.state());
         return out.put(color);
     }
+    case Op::point_on_light: {
+        const AreaLight light = in.get<AreaLight>();
+        const Vec2 uv = in.get<Vec2>();
+        end_of(in);
+        return out.put(point_on_light(light, uv));
+    }
+    case Op::light_samples: {
+        const Tracer& tracer = link.incoming_tracer(in, op);
+        const AreaLight light = in.get<AreaLight>();
+        end_of(in);
+        const std::vector<PointLight> points = light_samples(tracer, light);
+        out.put(tracer.state());
+        return out.put_all(points);
+    }
     }
     throw LinkError("a call of an unknown function");
 }

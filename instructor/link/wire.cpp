@@ -87,6 +87,9 @@ void Writer::put(const Material& m) {
     if (m.checker) put(m.checker->color_a), put(m.checker->color_b), put(m.checker->size);
 }
 void Writer::put(const PointLight& light) { put(light.position), put(light.color); }
+void Writer::put(const AreaLight& light) {
+    put(light.center), put(light.color), put(light.edge_u), put(light.edge_v), put(light.samples), put(light.first_number);
+}
 void Writer::put(const RenderSettings& s) {
     put(s.stage), put(s.max_depth), put(s.min_weight), put(s.max_rays_per_pixel), put(s.samples_per_pixel);
 }
@@ -99,7 +102,7 @@ void Writer::put(const TracerState& s) {
 }
 void Writer::put(const SceneData& d) {
     put(d.camera), put(d.background), put(d.ambient);
-    put_all(d.lights), put_all(d.materials), put_all(d.primitives);
+    put_all(d.lights), put_all(d.area_lights), put_all(d.materials), put_all(d.primitives);
     put(static_cast<std::uint64_t>(d.vertex_normals.size()));
     for (const VertexNormals& normals : d.vertex_normals) put(normals[0]), put(normals[1]), put(normals[2]);
     put(d.max_depth), put(d.samples_per_pixel), put(static_cast<int>(d.acceleration));
@@ -226,6 +229,19 @@ template <> PointLight Reader::get<PointLight>() {
     light.color = get<Vec3>();
     return light;
 }
+template <> AreaLight Reader::get<AreaLight>() {
+    AreaLight light;
+    light.center = get<Vec3>(), light.color = get<Vec3>(), light.edge_u = get<Vec3>(), light.edge_v = get<Vec3>();
+    light.samples = get<int>(), light.first_number = get<std::uint32_t>();
+    // As the scene loader allows: a light's points are made in one go.
+    if (light.samples < 1 || light.samples > 4096) throw LinkError("an area light with a bad sample count");
+    return light;
+}
+template <> std::vector<PointLight> Reader::get<std::vector<PointLight>>() {
+    std::vector<PointLight> lights(count(48));
+    for (PointLight& light : lights) light = get<PointLight>();
+    return lights;
+}
 template <> RenderSettings Reader::get<RenderSettings>() {
     RenderSettings s;
     s.stage = get<int>(), s.max_depth = get<int>(), s.min_weight = get<double>();
@@ -252,8 +268,9 @@ template <> TracerState Reader::get<TracerState>() {
 template <> SceneData Reader::get<SceneData>() {
     SceneData d;
     d.camera = get<Camera>(), d.background = get<Vec3>(), d.ambient = get<Vec3>();
-    d.lights.resize(count(48));
-    for (PointLight& light : d.lights) light = get<PointLight>();
+    d.lights = get<std::vector<PointLight>>();
+    d.area_lights.resize(count(108));
+    for (AreaLight& light : d.area_lights) light = get<AreaLight>();
     d.materials.resize(count(81));
     for (Material& material : d.materials) material = get<Material>();
     d.primitives.resize(count(41));

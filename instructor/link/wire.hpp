@@ -85,6 +85,7 @@ class Writer {
     void put(const Primitive& primitive);
     void put(const Material& material);
     void put(const PointLight& light);
+    void put(const AreaLight& light);
     void put(const RenderSettings& settings);
     void put(const RayStats& stats);
     void put(const TracerState& state);
@@ -148,6 +149,8 @@ template <> Shape Reader::get<Shape>();
 template <> Primitive Reader::get<Primitive>();
 template <> Material Reader::get<Material>();
 template <> PointLight Reader::get<PointLight>();
+template <> AreaLight Reader::get<AreaLight>();
+template <> std::vector<PointLight> Reader::get<std::vector<PointLight>>();
 template <> RenderSettings Reader::get<RenderSettings>();
 template <> RayStats Reader::get<RayStats>();
 template <> TracerState Reader::get<TracerState>();

@@ -5,6 +5,9 @@
 #include "whitted/labs.hpp"
 
 #include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
 
 namespace whitted::testing_helpers {
 
@@ -233,6 +236,40 @@ inline RenderSettings with_samples(int samples) {
     settings.stage = stage_number(Stage::anti_aliasing);
     settings.samples_per_pixel = samples;
     return settings;
+}
+
+// ---- Lab 8: soft shadows --------------------------------------------------------
+
+/// Settings for the soft-shadows stage (Whitted sampling of the pixel: one eye ray).
+inline RenderSettings soft_shadow_settings() {
+    RenderSettings settings;
+    settings.stage = stage_number(Stage::soft_shadows);
+    return settings;
+}
+
+/// A size x size square light facing down: edge_u along +x, edge_v along +z.
+inline AreaLight square_light(const Point3& center, double size, int samples, Color color = Color(1.0)) {
+    AreaLight light;
+    light.center = center;
+    light.color = color;
+    light.edge_u = Vec3(size, 0.0, 0.0);
+    light.edge_v = Vec3(0.0, 0.0, size);
+    light.samples = samples;
+    return light;
+}
+
+/// Expects `got` within 1e-12 of `expected` in each coordinate.
+inline void expect_point(const Point3& got, const Point3& expected, const std::string& what) {
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], expected[i], 1e-12) << what << ", coordinate " << i;
+}
+
+/// Where the handout puts point k of `light` for pixel sample `sample`: the numbers
+/// of SampleUse::light number first_number + k, in cell k of the grid, on the parallelogram.
+inline Point3 expected_light_point(const AreaLight& light, const PixelSample& sample, int k) {
+    const Vec2 u = sample_numbers(sample, SampleUse::light, light.first_number + static_cast<std::uint32_t>(k));
+    const SampleGrid grid = sample_grid(light.samples);
+    const double s = (k % grid.cols + u.x) / grid.cols, t = (k / grid.cols + u.y) / grid.rows;
+    return light.center + (s - 0.5) * light.edge_u + (t - 0.5) * light.edge_v;
 }
 
 } // namespace whitted::testing_helpers

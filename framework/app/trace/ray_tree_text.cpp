@@ -30,16 +30,28 @@ const char* kind_name(RayKind kind) {
     return "ray";
 }
 
-// The light a feeler goes to: the one nearest the feeler's end.
-int light_of(const Scene& scene, const RayNode& feeler) {
+// The light a feeler goes to: the point light nearest the feeler's end, or the
+// area light whose parallelogram holds it (a point lab 8 took on it).
+std::string light_of(const Scene& scene, const RayNode& feeler) {
     const Point3 end = feeler.ray.at(feeler.light_distance);
-    int best = 0;
+    std::string name;
     double best_distance = kInfinity;
-    for (std::size_t i = 0; i < scene.lights().size(); ++i) {
-        const double d = glm::length(scene.lights()[i].position - end);
-        if (d < best_distance) best = static_cast<int>(i), best_distance = d;
+    for (std::size_t i = 0; i < scene.point_lights().size(); ++i) {
+        const double d = glm::length(scene.point_lights()[i].position - end);
+        if (d < best_distance) name = "light " + std::to_string(i + 1) + " at " + vec(scene.point_lights()[i].position), best_distance = d;
     }
-    return best;
+    for (std::size_t i = 0; i < scene.area_lights().size(); ++i) {
+        const AreaLight& light = scene.area_lights()[i];
+        // The end's distance from the light's plane, and its place along the edges (in edge lengths from the centre).
+        const Vec3 normal = glm::normalize(glm::cross(light.edge_u, light.edge_v));
+        const Vec3 offset = end - light.center;
+        const double along_u = glm::dot(offset, light.edge_u) / glm::dot(light.edge_u, light.edge_u);
+        const double along_v = glm::dot(offset, light.edge_v) / glm::dot(light.edge_v, light.edge_v);
+        const double d = std::abs(glm::dot(offset, normal));
+        if (std::abs(along_u) <= 0.5 + 1e-6 && std::abs(along_v) <= 0.5 + 1e-6 && d < best_distance)
+            name = "a point of area light " + std::to_string(i + 1) + " at " + vec(end), best_distance = d;
+    }
+    return name;
 }
 
 struct TextWriter {
@@ -53,10 +65,9 @@ struct TextWriter {
         const RayNode& node = tree.nodes[index];
         std::string text = kind_name(node.kind);
         if (node.kind == RayKind::shadow) {
-            if (context.scene.lights().empty()) return text + " (the scene has no light)";
-            const int light = light_of(context.scene, node);
-            text += " to light " + std::to_string(light + 1) + " at " + vec(context.scene.lights()[light].position) +
-                    ", " + number(node.light_distance) + " away: ";
+            const std::string light = light_of(context.scene, node);
+            if (light.empty()) return text + " (to no light of the scene)";
+            text += " to " + light + ", " + number(node.light_distance) + " away: ";
             if (node.fate == RayFate::over_budget) return text + "not cast (the pixel's ray budget is used up)";
             if (!node.blocked) return text + "lit";
             text += "BLOCKED";

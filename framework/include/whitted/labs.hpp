@@ -22,6 +22,7 @@
 
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace whitted {
 
@@ -43,11 +44,12 @@ std::optional<Hit> closest_hit(const Ray& ray, std::span<const Primitive> primit
 Ray spawn_ray(const Hit& hit, const Vec3& direction);
 /// True when nothing lies between the hit point and the light (a shadow feeler).
 bool is_lit(const Tracer& tracer, const Hit& hit, const PointLight& light);
-/// Lambert diffuse light from every light that reaches the hit point.
+/// Lambert diffuse light from every light of tracer.lights() that reaches the hit point.
 Color lambert(const Tracer& tracer, const Hit& hit);
 
 // ---- Lab 3: Blinn-Phong (03_blinn_phong.cpp) --------------------------------
-/// Ambient plus, for every light that reaches the hit point, diffuse and Blinn-Phong specular.
+/// Ambient plus, for every light of tracer.lights() that reaches the hit point,
+/// diffuse and Blinn-Phong specular.
 Color blinn_phong(const Tracer& tracer, const Hit& hit, const Vec3& wo);
 
 // ---- Lab 4: reflection (04_reflection.cpp) ----------------------------------
@@ -81,5 +83,15 @@ Vec2 stratified_sample(int index, int count, Vec2 u);
 /// with tracer.trace_sample({x, y, k}, ...) through the place stratified_sample
 /// gives it for the numbers sample_numbers({x, y, k}, SampleUse::pixel).
 Color pixel_color(const Tracer& tracer, int x, int y);
+
+// ---- Lab 8: soft shadows (08_soft_shadows.cpp) ------------------------------
+/// The point of the area light at (u, v) in [0, 1)^2: (0, 0) is the corner
+/// center - edge_u / 2 - edge_v / 2, u runs along edge_u and v along edge_v.
+Point3 point_on_light(const AreaLight& light, Vec2 uv);
+/// The area light as light.samples point lights for the current pixel sample,
+/// each with 1 / light.samples of its colour. Point k lies where
+/// stratified_sample(k, light.samples, u) puts it on the light, for the numbers
+/// u = sample_numbers(tracer.pixel_sample(), SampleUse::light, light.first_number + k).
+std::vector<PointLight> light_samples(const Tracer& tracer, const AreaLight& light);
 
 } // namespace whitted

@@ -7,6 +7,7 @@
 
 #include "whitted/math.hpp"
 
+#include <cstdint>
 #include <optional>
 
 namespace whitted {
@@ -37,6 +38,19 @@ struct Material {
 struct PointLight {
     Point3 position;
     Color color{1.0};
+};
+
+/// A light with a size (the `arealight` extension): the parallelogram of points
+/// center + s edge_u + t edge_v, s and t from -1/2 to 1/2, shining in every
+/// direction like a point light. Each pixel sample shares its colour out
+/// between `samples` points on it (lab 8), which gives soft shadows.
+struct AreaLight {
+    Point3 center;
+    Color color{1.0};
+    Vec3 edge_u{1.0, 0.0, 0.0};
+    Vec3 edge_v{0.0, 0.0, 1.0};
+    int samples = 1;              // points a pixel sample takes on the light, >= 1
+    std::uint32_t first_number = 0; // its points use sample numbers first_number, first_number + 1, ... (set by the scene)
 };
 
 } // namespace whitted

@@ -23,6 +23,8 @@ struct PixelSample {
     int x = 0;
     int y = 0;
     int index = 0;
+
+    friend bool operator==(const PixelSample&, const PixelSample&) = default;
 };
 
 /// Two numbers in [0, 1) for this sample and use; `n` tells apart several pairs

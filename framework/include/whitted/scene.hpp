@@ -29,7 +29,8 @@ struct SceneData {
     Color background{0.0};
     std::shared_ptr<const Skybox> skybox; // P3F `env`: seen instead of the background colour (shared: never changes)
     Color ambient{0.0};           // ambient light intensity (extension keyword `ambient`)
-    std::vector<PointLight> lights;
+    std::vector<PointLight> lights;       // point lights (`l`)
+    std::vector<AreaLight> area_lights;   // lights with a size (`arealight`)
     std::vector<Material> materials;
     std::vector<Primitive> primitives;
     std::vector<VertexNormals> vertex_normals;
@@ -68,7 +69,11 @@ class Scene {
         return data_.skybox ? data_.skybox->lookup(direction) : data_.background;
     }
     const Color& ambient() const { return data_.ambient; }
-    std::span<const PointLight> lights() const { return data_.lights; }
+    /// The file's point lights. Shading code asks Tracer::lights() instead: it
+    /// adds the area lights, as the points that light the current pixel sample.
+    std::span<const PointLight> point_lights() const { return data_.lights; }
+    /// The file's area lights.
+    std::span<const AreaLight> area_lights() const { return data_.area_lights; }
     std::span<const Primitive> primitives() const { return data_.primitives; }
     int max_depth() const { return data_.max_depth; }
 

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 
 namespace whitted {
 
@@ -81,8 +82,8 @@ class Tracer {
     Color trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const;
 
     /// The colour seen through viewport position (x, y) (see primary_ray): one
-    /// eye ray, with a ray budget of its own. Whitted ray tracing calls it with
-    /// each pixel's centre.
+    /// eye ray, with a ray budget of its own, as sample 0 of the pixel that
+    /// contains (x, y). Whitted ray tracing calls it with each pixel's centre.
     Color trace_pixel(double x, double y) const;
 
     /// The colour of one sample of a pixel, seen through viewport position (x, y)
@@ -90,13 +91,20 @@ class Tracer {
     /// the lens, the lights) are those of `sample`.
     Color trace_sample(const PixelSample& sample, double x, double y) const;
 
-    /// The pixel sample being traced (set by trace_sample; pixel (0, 0), sample 0 before).
+    /// The pixel sample being traced (set by trace_sample, and by trace_pixel to
+    /// sample 0 of the pixel it traces; pixel (0, 0), sample 0 before).
     const PixelSample& pixel_sample() const;
 
-    /// Starts a new pixel: its ray budget, path weight and cut-short mark from
-    /// the start. trace_pixel() does this itself; code that casts a pixel's rays
-    /// another way (the shadow pass's feelers) calls it at each pixel.
-    void begin_pixel() const;
+    /// The lights that light this pixel sample, as point lights: the scene's
+    /// point lights, then each area light as the points lab 8's light_samples()
+    /// takes on it (before the soft-shadows stage, one point at its centre with
+    /// all its colour). Shading code loops over these.
+    std::span<const PointLight> lights() const;
+
+    /// Starts pixel sample `sample`: its ray budget, path weight and cut-short
+    /// mark from the start. trace_sample() does this itself; code that casts a
+    /// pixel's rays another way (the shadow pass's feelers) calls it at each pixel.
+    void begin_pixel(const PixelSample& sample) const;
 
     /// True when something lies along the shadow feeler `ray` with 0 < t < distance.
     /// The range stops a hair (a millionth) short of `distance`, so that a surface
