@@ -107,6 +107,9 @@ int run_render(const RenderOptions& options) {
     if (settings.samples_per_pixel > 0 && settings.stage < stage_number(Stage::anti_aliasing) && !options.pass)
         std::fprintf(stderr, "note: %d samples per pixel need lab 7 (anti-aliasing); stage %d traces one ray through "
                              "each pixel centre\n", settings.samples_per_pixel, settings.stage);
+    if (loaded.data.camera.aperture > 0.0 && settings.stage < stage_number(Stage::depth_of_field) && !options.pass)
+        std::fprintf(stderr, "note: the camera's aperture needs lab 9 (depth of field); stage %d renders it as a "
+                             "pinhole, everything sharp\n", settings.stage);
     const double parse_seconds = seconds_since(load_start);
     const auto build_start = std::chrono::steady_clock::now();
     const Scene scene(std::move(loaded.data), linked_leaf_kernels());
