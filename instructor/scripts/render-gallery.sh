@@ -61,6 +61,10 @@ gallery=(
     "07_anti_aliasing sum_not_averaged        07_anti_aliasing 7"
     "07_anti_aliasing jitter_ignored          07_anti_aliasing 7 diff"
     "07_anti_aliasing pixel_centre_added      07_anti_aliasing 7"
+    "09_depth_of_field focus_on_the_view_plane 09_depth_of_field 9"
+    "09_depth_of_field origin_at_the_eye      09_depth_of_field 9"
+    "09_depth_of_field radius_is_the_aperture 09_depth_of_field 9"
+    "09_depth_of_field naive_polar_map        09_depth_of_field 9 diff"
 )
 
 # Build the reference renderer and only the mistake renderers the gallery uses.
@@ -86,6 +90,8 @@ done < <("$build/whitted" labs --tsv)
 
 # Lab 7's scene with one ray through each pixel centre, beside its goal.
 "$build/whitted" render scenes/07_anti_aliasing.p3f --stage 7 --spp 0 "${size[@]}" --quiet -o "$out/07_anti_aliasing_one_ray.png"
+# Lab 9's scene through a pinhole (stage 8), beside its goal.
+"$build/whitted" render scenes/09_depth_of_field.p3f --stage 8 "${size[@]}" --quiet -o "$out/09_depth_of_field_pinhole.png"
 
 # Gallery pictures.
 for entry in "${gallery[@]}"; do
