@@ -110,6 +110,9 @@ int run_render(const RenderOptions& options) {
     if (!loaded.data.area_lights.empty() && settings.stage < stage_number(Stage::soft_shadows))
         std::fprintf(stderr, "note: area lights need lab 8 (soft shadows); stage %d lights with a point at the centre "
                              "of each\n", settings.stage);
+    if (loaded.data.camera.aperture > 0.0 && settings.stage < stage_number(Stage::depth_of_field) && !options.pass)
+        std::fprintf(stderr, "note: the camera's aperture needs lab 9 (depth of field); stage %d renders it as a "
+                             "pinhole, everything sharp\n", settings.stage);
     const double parse_seconds = seconds_since(load_start);
     const auto build_start = std::chrono::steady_clock::now();
     const Scene scene(std::move(loaded.data), linked_leaf_kernels());

@@ -24,7 +24,11 @@ Camera Camera::create(Point3 eye, Point3 at, Vec3 up, double fovy_degrees, int r
 }
 
 Camera Camera::with_resolution(int new_res_x, int new_res_y) const {
-    return create(eye, at, up, fovy, new_res_x, new_res_y);
+    Camera camera = create(eye, at, up, fovy, new_res_x, new_res_y);
+    // The same lens in scene units: the same blur, in more or fewer pixels.
+    camera.aperture = aperture;
+    camera.focal_ratio = focal_ratio;
+    return camera;
 }
 
 } // namespace whitted

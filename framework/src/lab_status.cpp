@@ -55,6 +55,8 @@ std::map<std::string_view, std::function<void()>> lab_probes(const Scene& scene,
         {"pixel_color", [&tracer] { pixel_color(tracer, 0, 0); }},
         {"point_on_light", [=] { point_on_light(area_light, Vec2(0.5)); }},
         {"light_samples", [=, &tracer] { light_samples(tracer, area_light); }},
+        {"concentric_disk", [] { concentric_disk(Vec2(0.5)); }},
+        {"thin_lens_ray", [&scene] { thin_lens_ray(scene.camera(), 0.5, 0.5, Vec2(0.5)); }},
     };
 }
 

@@ -30,9 +30,8 @@ void read_viewpoint(SceneBuilder& scene, const Token& keyword) {
     const Viewpoint view = scene.read_viewpoint(keyword);
     double aperture = 0.0, focal_ratio = 1.0;
     if (tokens.peek().text == "aperture") {
-        const Token word = tokens.next();
+        tokens.next();
         aperture = NumberReader(tokens, "'aperture'", 1).non_negative("the lens aperture (in pixel widths)");
-        if (aperture > 0.0) scene.warn(word, "depth of field is not rendered yet (the camera is a pinhole)");
     }
     if (tokens.peek().text == "focal") {
         tokens.next();

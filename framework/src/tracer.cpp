@@ -192,7 +192,12 @@ Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const 
     begin_pixel(sample);
     if (e.tree) e.tree->clear();
     e.current_node = -1;
-    const Color color = trace(primary_ray(e.scene.camera(), x, y), 1, RayKind::eye, Color(1.0));
+    // The eye ray: through the pinhole, or from the sample's point of the thin lens
+    // (lab 9) when the camera has an aperture; a pinhole camera's picture never changes.
+    const Camera& camera = e.scene.camera();
+    const bool lens = camera.aperture > 0.0 && e.settings.stage >= stage_number(Stage::depth_of_field);
+    const Ray eye_ray = lens ? thin_lens_ray(camera, x, y, sample_numbers(sample, SampleUse::lens)) : primary_ray(camera, x, y);
+    const Color color = trace(eye_ray, 1, RayKind::eye, Color(1.0));
     if (e.pixel_cut_short) ++e.stats.pixels_cut_short;
     return color;
 }

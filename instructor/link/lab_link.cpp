@@ -42,7 +42,8 @@ constexpr std::array<std::string_view, kLastOp + 1> kFunctionNames{
     "?", "primary_ray", "intersect_sphere", "intersect_plane", "intersect_triangle", "closest_hit",
     "Scene::closest_hit", "Scene::occluded", "spawn_ray", "is_lit", "lambert", "blinn_phong",
     "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
-    "fresnel_blend", "stratified_sample", "pixel_color", "point_on_light", "light_samples"};
+    "fresnel_blend", "stratified_sample", "pixel_color", "point_on_light", "light_samples",
+    "concentric_disk", "thin_lens_ray"};
 constexpr bool every_op_named() {
     for (std::string_view name : kFunctionNames)
         if (name.empty()) return false;

@@ -45,8 +45,9 @@ enum class Op : std::uint16_t {
     fresnel_reflectance, fresnel_blend,
     stratified_sample, pixel_color,
     point_on_light, light_samples,
+    concentric_disk, thin_lens_ray,
 };
-constexpr int kLastOp = static_cast<int>(Op::light_samples);
+constexpr int kLastOp = static_cast<int>(Op::thin_lens_ray);
 
 /// The lab (1..kLabCount, from the lab table) whose code answers `op`; 0 for none.
 int lab_of(Op op);

@@ -165,6 +165,19 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         out.put(tracer.state());
         return out.put_all(points);
     }
+    case Op::concentric_disk: {
+        const Vec2 u = in.get<Vec2>();
+        end_of(in);
+        return out.put(concentric_disk(u));
+    }
+    case Op::thin_lens_ray: {
+        const Camera camera = in.get<Camera>();
+        const double x = in.get<double>();
+        const double y = in.get<double>();
+        const Vec2 lens_u = in.get<Vec2>();
+        end_of(in);
+        return out.put(thin_lens_ray(camera, x, y, lens_u));
+    }
     }
     throw LinkError("a call of an unknown function");
 }

@@ -65,6 +65,10 @@ gallery=(
     "08_soft_shadows  centre_only             08_soft_shadows  8"
     "08_soft_shadows  jitter_ignored          08_soft_shadows  8 diff"
     "08_soft_shadows  corner_at_the_centre    08_soft_shadows  8"
+    "09_depth_of_field focus_on_the_view_plane 09_depth_of_field 9"
+    "09_depth_of_field origin_at_the_eye      09_depth_of_field 9"
+    "09_depth_of_field radius_is_the_aperture 09_depth_of_field 9"
+    "09_depth_of_field naive_polar_map        09_depth_of_field 9 diff"
 )
 
 # Build the reference renderer and only the mistake renderers the gallery uses.
@@ -90,6 +94,8 @@ done < <("$build/whitted" labs --tsv)
 
 # Lab 7's scene with one ray through each pixel centre, beside its goal.
 "$build/whitted" render scenes/07_anti_aliasing.p3f --stage 7 --spp 0 "${size[@]}" --quiet -o "$out/07_anti_aliasing_one_ray.png"
+# Lab 9's scene through a pinhole (stage 8), beside its goal.
+"$build/whitted" render scenes/09_depth_of_field.p3f --stage 8 "${size[@]}" --quiet -o "$out/09_depth_of_field_pinhole.png"
 
 # Lab 8's scene lit by a point light at the lamp's centre (stage 7), and its shadow pass.
 "$build/whitted" render scenes/08_soft_shadows.p3f --stage 7 "${size[@]}" --quiet -o "$out/08_soft_shadows_point_light.png"

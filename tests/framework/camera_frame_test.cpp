@@ -54,3 +54,14 @@ TEST(Camera, ViewPlaneWidthFollowsTheAspectRatio) {
     EXPECT_NEAR(camera.h, 4.0, 1e-12);
     EXPECT_NEAR(camera.w, 8.0, 1e-12);
 }
+
+TEST(Camera, AnotherResolutionKeepsTheLens) {
+    // `--width` re-makes the camera: the thin lens (scene units) and its focus stay.
+    Camera camera = Camera::create({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45.0, 64, 48);
+    camera.aperture = 0.25;
+    camera.focal_ratio = 1.75;
+    const Camera wider = camera.with_resolution(200, 100);
+    EXPECT_EQ(wider.res_x, 200);
+    EXPECT_EQ(wider.aperture, 0.25);
+    EXPECT_EQ(wider.focal_ratio, 1.75);
+}

@@ -1,4 +1,5 @@
 // Loading scene files from disk: dialect by extension, file-system errors, and the real SPD scenes.
+#include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
 #include <gtest/gtest.h>
@@ -88,6 +89,38 @@ TEST(SceneFiles, TheCourseFeaturesSceneReadsEveryKeywordAsTheCourseMeansIt) {
     EXPECT_EQ(scene.data.materials.size(), 4u);
     // a plane, a sphere, a box and the four triangles of the mesh
     EXPECT_EQ(scene.data.primitives.size(), 7u);
+}
+
+TEST(SceneFiles, TheCourseDepthOfFieldSceneRendersWithSamplesSkyAndLens) {
+    // scenes/course_depth_of_field.p3f: spp 9, the labelled skybox, a lens 10 pixels across.
+    LoadedScene loaded = load_scene(fs::path(WHITTED_SOURCE_DIR) / "scenes" / "course_depth_of_field.p3f");
+    EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();
+    EXPECT_EQ(loaded.data.samples_per_pixel, 9);
+    ASSERT_TRUE(loaded.data.skybox);
+    EXPECT_NEAR(loaded.data.camera.aperture, 10.0 * loaded.data.camera.w / 320.0, 1e-12);
+    EXPECT_EQ(loaded.data.camera.focal_ratio, 0.9);
+    loaded.data.camera = loaded.data.camera.with_resolution(80, 60);
+    // Each feature changes the picture: the lens (against a pinhole), the samples
+    // (against one ray a pixel); the sky is seen where nothing is hit (not black).
+    const auto picture = [&](double aperture, int samples) {
+        SceneData data = loaded.data;
+        data.camera.aperture = aperture;
+        RenderSettings settings;
+        settings.stage = stage_number(Stage::depth_of_field);
+        settings.samples_per_pixel = samples;
+        return render(Scene(std::move(data)), settings, 2).image;
+    };
+    const Image full = picture(loaded.data.camera.aperture, 9);
+    const auto pixels_apart = [&](const Image& other) {
+        int count = 0;
+        for (std::size_t i = 0; i < full.pixels.size(); ++i)
+            if (glm::length(full.pixels[i] - other.pixels[i]) > 0.02) ++count;
+        return count;
+    };
+    EXPECT_GT(pixels_apart(picture(0.0, 9)), 80 * 60 / 20) << "the lens blurs at least 5 % of the pixels";
+    EXPECT_GT(pixels_apart(picture(loaded.data.camera.aperture, 0)), 80 * 60 / 20) << "9 samples a pixel smooth the picture";
+    const Color sky = full.pixels[0]; // the top-left corner looks into the sky, over the floor's horizon
+    EXPECT_GT(sky.r + sky.g + sky.b, 0.1);
 }
 
 TEST(SceneFiles, EverySpdSceneLoadsWithTheExpectedContent) {

@@ -235,8 +235,7 @@ TEST(P3fLoader, ApertureAndFocalMakeAThinLens) {
     const Camera& camera = scene.data.camera;
     EXPECT_NEAR(camera.aperture, 3.0 * (4.0 * 2.0 * 10.0 * std::tan(radians(30.0))) / 40.0, 1e-12);
     EXPECT_DOUBLE_EQ(camera.focal_ratio, 0.5);
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_EQ(scene.warnings[0], "scene.p3f:1:68: warning: depth of field is not rendered yet (the camera is a pinhole)");
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front(); // lab 9 renders it (`whitted render` notes it before)
     const auto pinhole = p3f("v from 0 0 1 at 0 0 0 up 0 1 0 angle 60 hither 1 resolution 4 4 aperture 0 focal 2");
     EXPECT_TRUE(pinhole.warnings.empty());
     EXPECT_EQ(pinhole.data.camera.aperture, 0.0);

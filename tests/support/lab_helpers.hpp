@@ -272,4 +272,56 @@ inline Point3 expected_light_point(const AreaLight& light, const PixelSample& sa
     return light.center + (s - 0.5) * light.edge_u + (t - 0.5) * light.edge_v;
 }
 
+// ---- Lab 9: depth of field -------------------------------------------------------
+
+/// Settings for the depth-of-field stage with `samples` a pixel (0: one eye ray a pixel).
+inline RenderSettings depth_of_field_settings(int samples = 0) {
+    RenderSettings settings;
+    settings.stage = stage_number(Stage::depth_of_field);
+    settings.samples_per_pixel = samples;
+    return settings;
+}
+
+/// The concentric mapping as the handout writes it, for the expected values of the
+/// tests that use it on many numbers (the mapping's own tests use values by hand).
+inline Vec2 expected_disk_point(Vec2 u) {
+    const double ax = 2.0 * u.x - 1.0, ay = 2.0 * u.y - 1.0;
+    if (ax == 0.0 && ay == 0.0) return Vec2(0.0);
+    const bool sideways = std::abs(ax) > std::abs(ay);
+    const double r = sideways ? ax : ay;
+    const double angle = sideways ? (kPi / 4.0) * (ay / ax) : kPi / 2.0 - (kPi / 4.0) * (ax / ay);
+    return Vec2(r * std::cos(angle), r * std::sin(angle));
+}
+
+/// The point of the view plane that viewport position (x, y) aims at, seen from the eye (lab 1's p).
+inline Vec3 view_plane_offset(const Camera& camera, double x, double y) {
+    return camera.w * (x / camera.res_x - 0.5) * camera.xe + camera.h * (y / camera.res_y - 0.5) * camera.ye -
+           camera.df * camera.ze;
+}
+
+/// The focal point of viewport position (x, y): eye + focal_ratio p, where every lens ray of (x, y) passes.
+inline Point3 focal_point(const Camera& camera, double x, double y) {
+    return camera.eye + camera.focal_ratio * view_plane_offset(camera, x, y);
+}
+
+/// The lens point of the numbers u, as the handout places it: eye + (aperture / 2) (d.x xe + d.y ye).
+inline Point3 expected_lens_point(const Camera& camera, Vec2 u) {
+    const Vec2 d = expected_disk_point(u);
+    return camera.eye + (camera.aperture / 2.0) * (d.x * camera.xe + d.y * camera.ye);
+}
+
+/// The distance from `point` to the line of `ray` (its unit direction).
+inline double distance_to_ray(const Point3& point, const Ray& ray) {
+    const Vec3 to_point = point - ray.origin;
+    return glm::length(to_point - glm::dot(to_point, ray.direction) * ray.direction);
+}
+
+/// A camera with a tilted frame (xe, ye not the world's x, y) and a thin lens.
+inline Camera tilted_lens_camera(double aperture, double focal_ratio, int res_x = 64, int res_y = 48) {
+    Camera camera = Camera::create(Point3(1.0, 2.0, 3.0), Point3(-2.0, 0.5, -4.0), Vec3(0.0, 1.0, 0.0), 50.0, res_x, res_y);
+    camera.aperture = aperture;
+    camera.focal_ratio = focal_ratio;
+    return camera;
+}
+
 } // namespace whitted::testing_helpers

@@ -35,8 +35,8 @@ struct Camera {
     /// at - eye, 0 < fovy < 180 and positive resolution (the scene loader checks them).
     static Camera create(Point3 eye, Point3 at, Vec3 up, double fovy_degrees, int res_x, int res_y);
 
-    /// The same camera with another resolution: the view-plane height is kept,
-    /// the width follows the new aspect ratio.
+    /// The same camera with another resolution: the view-plane height and the
+    /// lens (aperture in scene units, focal_ratio) are kept, the width follows the new aspect ratio.
     Camera with_resolution(int new_res_x, int new_res_y) const;
 };
 

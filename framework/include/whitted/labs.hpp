@@ -94,4 +94,20 @@ Point3 point_on_light(const AreaLight& light, Vec2 uv);
 /// u = sample_numbers(tracer.pixel_sample(), SampleUse::light, light.first_number + k).
 std::vector<PointLight> light_samples(const Tracer& tracer, const AreaLight& light);
 
+// ---- Lab 9: depth of field (09_depth_of_field.cpp) --------------------------
+/// The point of the unit disk for u in [0, 1)^2 by Shirley and Chiu's concentric
+/// mapping, which keeps areas (and so a stratified grid stays one): a = 2u - 1
+/// (the square [-1, 1]^2); a = (0, 0) gives (0, 0); when |a.x| > |a.y| the
+/// point is at radius r = a.x and angle (pi / 4) (a.y / a.x), otherwise at
+/// radius r = a.y and angle pi / 2 - (pi / 4) (a.x / a.y); the point is
+/// (r cos(angle), r sin(angle)) (a negative r puts it on the opposite side).
+Vec2 concentric_disk(Vec2 u);
+/// The eye ray of the thin lens through viewport position (x, y) (in pixels,
+/// as for primary_ray) from the lens point lens_u picks: the lens point is
+/// eye + (camera.aperture / 2) (d.x xe + d.y ye) with d = concentric_disk(lens_u),
+/// and the ray goes from it (unit direction) through the focal point
+/// eye + camera.focal_ratio p, where p = (x / res_x - 1/2) w xe + (y / res_y - 1/2) h ye - df ze
+/// is the point primary_ray aims at, seen from the eye.
+Ray thin_lens_ray(const Camera& camera, double x, double y, Vec2 lens_u);
+
 } // namespace whitted
