@@ -1,8 +1,8 @@
 // `whitted generate KIND [--level N] [-o FILE]`: write a procedural benchmark
-// scene (sphereflake, fractal tetrahedron) as NFF, to a file or to stdout.
+// scene (sphereflake, fractal tetrahedron as NFF; a dense torus mesh as P3F), to a file or to stdout.
 //
 // Why a command: students and `make bench` get scenes of any size without
-// downloading SPD, and the output is an ordinary NFF file to render or read.
+// downloading SPD, and the output is an ordinary scene file to render or read.
 #include "commands.hpp"
 #include "whitted/generators.hpp"
 
@@ -33,12 +33,12 @@ int run_generate(const GenerateOptions& options) {
         return 2;
     }
     if (options.output.empty()) {
-        generator.write_nff(level, std::cout);
+        generator.write(level, std::cout);
         std::cout.flush();
         return std::cout ? 0 : 1;
     }
     std::ofstream file(options.output, std::ios::binary);
-    if (file) generator.write_nff(level, file);
+    if (file) generator.write(level, file);
     file.close();
     if (!file) {
         std::fprintf(stderr, "whitted generate: cannot write %s\n", options.output.c_str());
@@ -59,12 +59,12 @@ Command add_generate_command(CLI::App& app) {
                   std::to_string(generator.min_level) + " to " + std::to_string(generator.max_level) + ", default " +
                   std::to_string(generator.default_level);
     }
-    CLI::App* command = app.add_subcommand("generate", "Write a procedural benchmark scene (SPD style) as NFF.");
+    CLI::App* command = app.add_subcommand("generate", "Write a procedural benchmark scene: sphereflake and tetra (SPD style, NFF), torus (one dense P3F mesh).");
     command->add_option("kind", options->kind, "What to generate: sphereflake or tetra")
         ->required()
         ->check(CLI::IsMember(names));
     command->add_option("--level", options->level, "Recursion level (" + levels + ")");
-    command->add_option("-o,--output", options->output, "NFF file to write (default: standard output)");
+    command->add_option("-o,--output", options->output, "Scene file to write: .nff for sphereflake and tetra, .p3f for torus (default: standard output)");
     command->footer("Example: whitted generate sphereflake --level 4 -o flake4.nff");
     return Command{command, [options] { return run_generate(*options); }};
 }

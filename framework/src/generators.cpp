@@ -10,9 +10,10 @@
 namespace whitted {
 namespace {
 
-constexpr std::array<Generator, 2> kGenerators{{
-    {"sphereflake", "flake", "spheres", 0, kMaxSphereflakeLevel, 4, sphereflake_sphere_count, write_sphereflake_nff},
-    {"tetra", "tetra", "triangles", kMinTetraLevel, kMaxTetraLevel, 6, tetra_triangle_count, write_tetra_nff},
+constexpr std::array<Generator, 3> kGenerators{{
+    {"sphereflake", "flake", "spheres", ".nff", 0, kMaxSphereflakeLevel, 4, sphereflake_sphere_count, write_sphereflake_nff},
+    {"tetra", "tetra", "triangles", ".nff", kMinTetraLevel, kMaxTetraLevel, 6, tetra_triangle_count, write_tetra_nff},
+    {"torus", "torus", "triangles", ".p3f", kMinTorusLevel, kMaxTorusLevel, 5, torus_triangle_count, write_torus_p3f},
 }};
 
 } // namespace

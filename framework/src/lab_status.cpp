@@ -56,6 +56,10 @@ std::map<std::string_view, std::function<void()>> lab_probes(const Scene& scene,
         {"point_on_light", [=] { point_on_light(area_light, Vec2(0.5)); }},
         {"light_samples", [=, &tracer] { light_samples(tracer, area_light); }},
         {"concentric_disk", [] { concentric_disk(Vec2(0.5)); }},
+        {"box_entry", [=] { box_entry(ray, Vec3(1.0), Aabb{Point3(-1.0), Point3(1.0)}, Interval{}); }},
+        {"build_bvh", [] { build_bvh({}); }},
+        {"bvh_closest_hit", [=, &scene] { bvh_closest_hit(scene, ray, Interval{}); }},
+        {"bvh_occluded", [=, &scene] { bvh_occluded(scene, ray, Interval{}); }},
         {"thin_lens_ray", [&scene] { thin_lens_ray(scene.camera(), 0.5, 0.5, Vec2(0.5)); }},
     };
 }

@@ -7,6 +7,8 @@
 #include "whitted/labs.hpp"
 
 #include <atomic>
+#include <mutex>
+#include <stdexcept>
 #include <utility>
 
 namespace whitted {
@@ -38,8 +40,15 @@ void apply_vertex_normals(Hit& hit, const Ray& ray, const VertexNormals& normals
 
 [[gnu::weak]] const RemoteSceneQueries* remote_scene_queries() { return nullptr; }
 
-Scene::Scene(SceneData data, const LeafKernels* kernels)
-    : data_(std::move(data)), kernels_(kernels), remote_(remote_scene_queries()), serial_(next_serial()) {
+// Lab 10's tree: built once, by whichever thread asks first.
+struct Scene::LabBvh {
+    std::once_flag built;
+    BvhTree tree;
+};
+
+Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
+    : data_(std::move(data)), kernels_(kernels), remote_(remote_scene_queries()),
+      lab_bvh_(std::make_shared<LabBvh>()), bvh_choice_(bvh), serial_(next_serial()) {
     // Bounded primitives go into the BVH, in its order; infinite planes follow.
     std::vector<Primitive> bounded, unbounded;
     std::vector<std::uint32_t> bounded_index, unbounded_index;
@@ -80,6 +89,19 @@ Scene::Scene(SceneData data, const LeafKernels* kernels)
 
 std::size_t Scene::acceleration_bytes() const { return bvh_->bytes(); }
 
+const BvhTree& Scene::lab_bvh() const {
+    // A build that throws (not written yet) leaves the flag unset: the next call tries again.
+    std::call_once(lab_bvh_->built, [this] {
+        const std::vector<Aabb> boxes = primitive_boxes(bounded_primitives());
+        BvhTree tree = build_bvh(boxes);
+        if (const std::string error = bvh_tree_error(tree, boxes); !error.empty())
+            throw std::runtime_error("build_bvh() made a tree that is not a hierarchy over the scene's " +
+                                     std::to_string(boxes.size()) + " bounded primitives: " + error);
+        lab_bvh_->tree = std::move(tree);
+    });
+    return lab_bvh_->tree;
+}
+
 SceneData Scene::source_data() const {
     SceneData data = data_;
     for (std::size_t i = 0; i < data_.primitives.size(); ++i) data.primitives[source_index_[i]] = data_.primitives[i];
@@ -92,13 +114,23 @@ void Scene::apply_vertex_normals(Hit& hit, const Ray& ray) const {
 }
 
 std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
+    const std::span<const Primitive> all = data_.primitives;
+    if (data_.acceleration == Acceleration::none) { // every primitive, one after the other: the slow way, on purpose
+        std::optional<Hit> nearest = whitted::closest_hit(ray, all, t_range);
+        if (nearest) apply_vertex_normals(*nearest, ray);
+        return nearest;
+    }
     if (kernels_) return closest_hit_with_kernels(ray, t_range);
     if (remote_) [[unlikely]]
         return remote_->closest_hit(*this, ray, t_range);
-    const std::span<const Primitive> all = data_.primitives;
     // Infinite planes first: a plane hit shortens the range the BVH must search.
     std::optional<Hit> nearest = whitted::closest_hit(ray, all.subspan(bounded_count_), t_range);
     if (nearest) t_range.max = nearest->t;
+    if (walks_lab_bvh()) {
+        if (std::optional<Hit> hit = bvh_closest_hit(*this, ray, t_range)) nearest = hit;
+        if (nearest) apply_vertex_normals(*nearest, ray);
+        return nearest;
+    }
     bvh_->traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
         if (auto hit = whitted::closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max})) {
             nearest = hit;
@@ -121,13 +153,19 @@ std::optional<Hit> Scene::closest_hit_with_kernels(const Ray& ray, Interval t_ra
 }
 
 bool Scene::occluded(const Ray& ray, Interval t_range) const {
+    const std::span<const Primitive> all = data_.primitives;
+    if (data_.acceleration == Acceleration::none) {
+        for (const Primitive& primitive : all)
+            if (intersect(ray, primitive, t_range)) return true;
+        return false;
+    }
     if (kernels_) return occluded_with_kernels(ray, t_range);
     if (remote_) [[unlikely]]
         return remote_->occluded(*this, ray, t_range);
-    const std::span<const Primitive> all = data_.primitives;
     for (const Primitive& plane : all.subspan(bounded_count_)) {
         if (intersect(ray, plane, t_range)) return true;
     }
+    if (walks_lab_bvh()) return bvh_occluded(*this, ray, t_range);
     bool blocked = false;
     bvh_->traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
         for (const Primitive& primitive : all.subspan(first, count)) {

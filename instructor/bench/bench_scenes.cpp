@@ -24,12 +24,12 @@ std::string unique_name(const std::vector<BenchScene>& scenes, const std::string
 BenchScene generate(const Generator& generator, int level, const std::filesystem::path& folder) {
     BenchScene scene;
     scene.name = std::string(generator.short_name) + std::to_string(level);
-    scene.path = folder / (scene.name + ".nff");
+    scene.path = folder / (scene.name + std::string(generator.extension));
     scene.generator = generator.name;
     scene.level = level;
     scene.generated_primitives = generator.primitive_count(level);
     std::ofstream file(scene.path, std::ios::binary);
-    if (file) generator.write_nff(level, file);
+    if (file) generator.write(level, file);
     file.close();
     if (!file) throw std::runtime_error("cannot write the generated scene " + scene.path.string());
     return scene;

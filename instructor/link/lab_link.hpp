@@ -46,8 +46,9 @@ enum class Op : std::uint16_t {
     stratified_sample, pixel_color,
     point_on_light, light_samples,
     concentric_disk, thin_lens_ray,
+    box_entry, build_bvh, bvh_closest_hit, bvh_occluded,
 };
-constexpr int kLastOp = static_cast<int>(Op::thin_lens_ray);
+constexpr int kLastOp = static_cast<int>(Op::bvh_occluded);
 
 /// The lab (1..kLabCount, from the lab table) whose code answers `op`; 0 for none.
 int lab_of(Op op);

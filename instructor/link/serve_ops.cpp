@@ -165,6 +165,33 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         out.put(tracer.state());
         return out.put_all(points);
     }
+    case Op::box_entry: {
+        const Ray ray = in.get<Ray>();
+        const Vec3 inv_direction = in.get<Vec3>();
+        const Aabb box = in.get<Aabb>();
+        const Interval range = in.get<Interval>();
+        end_of(in);
+        return out.put(box_entry(ray, inv_direction, box, range));
+    }
+    case Op::build_bvh: {
+        const std::vector<Aabb> boxes = in.get<std::vector<Aabb>>();
+        end_of(in);
+        return out.put(build_bvh(boxes));
+    }
+    case Op::bvh_closest_hit: {
+        const Scene& scene = link.incoming_scene(in);
+        const Ray ray = in.get<Ray>();
+        const Interval range = in.get<Interval>();
+        end_of(in);
+        return out.put(bvh_closest_hit(scene, ray, range));
+    }
+    case Op::bvh_occluded: {
+        const Scene& scene = link.incoming_scene(in);
+        const Ray ray = in.get<Ray>();
+        const Interval range = in.get<Interval>();
+        end_of(in);
+        return out.put(bvh_occluded(scene, ray, range));
+    }
     case Op::concentric_disk: {
         const Vec2 u = in.get<Vec2>();
         end_of(in);

@@ -87,6 +87,13 @@ void Writer::put(const Material& m) {
     if (m.checker) put(m.checker->color_a), put(m.checker->color_b), put(m.checker->size);
 }
 void Writer::put(const PointLight& light) { put(light.position), put(light.color); }
+void Writer::put(const Aabb& box) { put(box.min), put(box.max); }
+void Writer::put(const BvhTree& tree) {
+    put(static_cast<std::uint64_t>(tree.nodes.size()));
+    for (const BvhNode& node : tree.nodes) put(node.bounds), put(node.first), put(node.count);
+    put(static_cast<std::uint64_t>(tree.order.size()));
+    for (std::uint32_t index : tree.order) put(index);
+}
 void Writer::put(const AreaLight& light) {
     put(light.center), put(light.color), put(light.edge_u), put(light.edge_v), put(light.samples), put(light.first_number);
 }
@@ -228,6 +235,29 @@ template <> PointLight Reader::get<PointLight>() {
     light.position = get<Vec3>();
     light.color = get<Vec3>();
     return light;
+}
+template <> Aabb Reader::get<Aabb>() {
+    Aabb box;
+    box.min = get<Vec3>(), box.max = get<Vec3>();
+    return box;
+}
+template <> std::vector<Aabb> Reader::get<std::vector<Aabb>>() {
+    std::vector<Aabb> boxes(count(48));
+    for (Aabb& box : boxes) box = get<Aabb>();
+    return boxes;
+}
+template <> BvhTree Reader::get<BvhTree>() {
+    // Only sizes are checked here; whether it is a hierarchy over the boxes, the receiver checks (bvh_tree_error).
+    BvhTree tree;
+    tree.nodes.resize(count(56));
+    for (BvhNode& node : tree.nodes) node.bounds = get<Aabb>(), node.first = get<std::uint32_t>(), node.count = get<std::uint32_t>();
+    tree.order.resize(count(4));
+    for (std::uint32_t& index : tree.order) index = get<std::uint32_t>();
+    return tree;
+}
+template <> std::optional<double> Reader::get<std::optional<double>>() {
+    if (!get<bool>()) return std::nullopt;
+    return get<double>();
 }
 template <> AreaLight Reader::get<AreaLight>() {
     AreaLight light;

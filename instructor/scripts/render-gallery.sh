@@ -69,6 +69,9 @@ gallery=(
     "09_depth_of_field origin_at_the_eye      09_depth_of_field 9"
     "09_depth_of_field radius_is_the_aperture 09_depth_of_field 9"
     "09_depth_of_field naive_polar_map        09_depth_of_field 9 diff"
+    "10_bvh           first_hit_is_nearest    10_bvh           10"
+    "10_bvh           nearer_child_only       10_bvh           10"
+    "10_bvh           slabs_not_swapped       10_bvh           10"
 )
 
 # Build the reference renderer and only the mistake renderers the gallery uses.

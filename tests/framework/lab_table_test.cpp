@@ -65,7 +65,7 @@ TEST(LabTable, EveryFunctionHasAProbeAndEveryProbeAFunction) {
 }
 
 TEST(LabTable, StageListAndDefaultsFollowTheTable) {
-    EXPECT_EQ(stage_list(), "1 ray casting, 2 shadows, 3 Blinn-Phong, 4 reflection, 5 refraction, 6 Fresnel, 7 anti-aliasing, 8 soft shadows, 9 depth of field");
+    EXPECT_EQ(stage_list(), "1 ray casting, 2 shadows, 3 Blinn-Phong, 4 reflection, 5 refraction, 6 Fresnel, 7 anti-aliasing, 8 soft shadows, 9 depth of field, 10 bounding volume hierarchy");
     EXPECT_EQ(RenderSettings{}.stage, kLabCount);
     EXPECT_EQ(probe_labs().size(), kLabs.size());
 }

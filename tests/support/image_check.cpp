@@ -68,7 +68,7 @@ void expect_matches_reference(const ImageCheck& check) {
     settings.stage = check.stage;
     settings.max_depth = loaded.data.max_depth;
     settings.samples_per_pixel = loaded.data.samples_per_pixel;
-    const Scene scene(std::move(loaded.data));
+    const Scene scene(std::move(loaded.data), nullptr, check.stage >= stage_number(Stage::bvh) ? BvhChoice::lab : BvhChoice::framework);
     Image rendered = render(scene, settings, 2).image;
 
     if (const char* update = std::getenv("WHITTED_UPDATE_REFERENCES"); update && std::string(update) == "1") {

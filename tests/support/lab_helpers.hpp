@@ -324,4 +324,50 @@ inline Camera tilted_lens_camera(double aperture, double focal_ratio, int res_x 
     return camera;
 }
 
+// ---- Lab 10: bounding volume hierarchy -------------------------------------------
+
+/// Numbers in [0, 1) from a seed, the same on every machine (a 64-bit LCG's top bits).
+struct TestNumbers {
+    std::uint64_t state;
+    double next() {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(state >> 11) * 0x1.0p-53;
+    }
+    Point3 point(double size) { return size * Point3(next() - 0.5, next() - 0.5, next() - 0.5); }
+};
+
+/// `count` small triangles scattered through a cube of side `size` (a soup: no mesh order to exploit).
+inline std::vector<Primitive> triangle_soup(std::size_t count, double size, std::uint64_t seed) {
+    TestNumbers numbers{seed};
+    std::vector<Primitive> soup;
+    for (std::size_t i = 0; i < count; ++i) {
+        const Point3 corner = numbers.point(size);
+        soup.push_back({Triangle{corner, corner + numbers.point(2.0), corner + numbers.point(2.0)}, 0});
+    }
+    return soup;
+}
+
+/// A scene of the primitives (material 0: grey, diffuse) with a camera looking at them from +z.
+inline SceneData bvh_test_scene(std::vector<Primitive> primitives, double size) {
+    SceneData data;
+    data.camera = Camera::create(Point3(0.3, 0.2, 1.5 * size), Point3(0.0), Vec3(0.0, 1.0, 0.0), 50.0, 24, 18);
+    data.materials = {diffuse_material(Color(0.7))};
+    data.primitives = std::move(primitives);
+    return data;
+}
+
+/// Rays through a grid of the camera's viewport and from inside the cloud outwards: what a render asks a BVH.
+inline std::vector<Ray> bvh_test_rays(const Camera& camera, double size, std::uint64_t seed) {
+    std::vector<Ray> rays;
+    for (int y = 0; y < camera.res_y; ++y)
+        for (int x = 0; x < camera.res_x; ++x) {
+            const Vec3 p = camera.w * ((x + 0.5) / camera.res_x - 0.5) * camera.xe +
+                           camera.h * ((y + 0.5) / camera.res_y - 0.5) * camera.ye - camera.df * camera.ze;
+            rays.push_back(Ray{camera.eye, glm::normalize(p)});
+        }
+    TestNumbers numbers{seed};
+    for (int i = 0; i < 200; ++i) rays.push_back(Ray{numbers.point(size), glm::normalize(numbers.point(1.0) + Vec3(1e-3))});
+    return rays;
+}
+
 } // namespace whitted::testing_helpers

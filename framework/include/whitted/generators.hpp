@@ -24,6 +24,8 @@ namespace whitted {
 inline constexpr int kMaxSphereflakeLevel = 7; // 5,380,840 spheres
 inline constexpr int kMinTetraLevel = 1;       // one tetrahedron, 4 triangles
 inline constexpr int kMaxTetraLevel = 9;       // 262,144 triangles
+inline constexpr int kMinTorusLevel = 1;       // 392 triangles
+inline constexpr int kMaxTorusLevel = 7;       // 1,605,632 triangles
 
 /// One sphere of a sphereflake; the root has index 0 and no parent.
 struct FlakeSphere {
@@ -54,6 +56,12 @@ void for_each_tetra_triangle(int level, const std::function<void(const std::arra
 /// Writes the whole NFF scene: view, background, one light and the triangles.
 void write_tetra_nff(int level, std::ostream& out);
 
+/// Number of triangles of the bumpy torus of `level`: 2 n^2 with n = 7 2^level.
+std::size_t torus_triangle_count(int level);
+
+/// Writes the whole P3F scene: `accel 2`, view, lights, a floor and the torus as one `mesh`.
+void write_torus_p3f(int level, std::ostream& out);
+
 /// The one-line message for a level outside `low..high`, or "" when it is inside.
 std::string generator_level_error(const std::string& kind, int level, int low, int high);
 
@@ -62,9 +70,10 @@ struct Generator {
     std::string_view name;          // "sphereflake", "tetra"
     std::string_view short_name;    // file names: "flake4.nff", "tetra6.nff"
     std::string_view what;          // "spheres", "triangles"
+    std::string_view extension;     // ".nff" or ".p3f": the dialect it writes
     int min_level, max_level, default_level;
     std::size_t (*primitive_count)(int level);
-    void (*write_nff)(int level, std::ostream& out); // throws std::invalid_argument for a bad level
+    void (*write)(int level, std::ostream& out); // throws std::invalid_argument for a bad level
 };
 
 /// Every generator, sphereflake first.

@@ -16,7 +16,7 @@
 namespace whitted {
 
 /// What the tracer does at each stage: stage k uses the features of labs 1..k.
-enum class Stage : int { ray_casting = 1, shadows, blinn_phong, reflection, refraction, fresnel, anti_aliasing, soft_shadows, depth_of_field };
+enum class Stage : int { ray_casting = 1, shadows, blinn_phong, reflection, refraction, fresnel, anti_aliasing, soft_shadows, depth_of_field, bvh };
 
 /// One lab: the file the student writes and what it adds to the renderer.
 struct LabInfo {
@@ -38,6 +38,7 @@ inline constexpr std::array kLabs = {
     LabInfo{7, "07_anti_aliasing", "anti-aliasing", Stage::anti_aliasing, "stratified_sample pixel_color"},
     LabInfo{8, "08_soft_shadows", "soft shadows", Stage::soft_shadows, "point_on_light light_samples"},
     LabInfo{9, "09_depth_of_field", "depth of field", Stage::depth_of_field, "concentric_disk thin_lens_ray"},
+    LabInfo{10, "10_bvh", "bounding volume hierarchy", Stage::bvh, "box_entry build_bvh bvh_closest_hit bvh_occluded"},
 };
 // clang-format on
 

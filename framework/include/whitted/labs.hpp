@@ -13,6 +13,8 @@
 //     at the critical angle itself and beyond (labs 5 and 6 alike).
 #pragma once
 
+#include "whitted/aabb.hpp"
+#include "whitted/bvh_tree.hpp"
 #include "whitted/camera.hpp"
 #include "whitted/hit.hpp"
 #include "whitted/interval.hpp"
@@ -109,5 +111,23 @@ Vec2 concentric_disk(Vec2 u);
 /// eye + camera.focal_ratio p, where p = (x / res_x - 1/2) w xe + (y / res_y - 1/2) h ye - df ze
 /// is the point primary_ray aims at, seen from the eye.
 Ray thin_lens_ray(const Camera& camera, double x, double y, Vec2 lens_u);
+
+// ---- Lab 10: bounding volume hierarchy (10_bvh.cpp) -------------------------
+/// Where the ray enters the box: the largest of t_range.min and the three slabs'
+/// entry distances, when that is no more than the smallest of t_range.max and
+/// their exit distances; nothing otherwise (the ray misses the box within
+/// t_range). inv_direction is 1 / ray.direction, axis by axis.
+std::optional<double> box_entry(const Ray& ray, const Vec3& inv_direction, const Aabb& box, Interval t_range);
+/// A bounding volume hierarchy over the boxes (box i is primitive i's): every
+/// index in exactly one leaf, children after their parent, every node's bounds
+/// around everything below it (whitted/bvh_tree.hpp); split so that rays test few
+/// boxes and primitives (the surface area heuristic, or at least the median).
+BvhTree build_bvh(std::span<const Aabb> boxes);
+/// The nearest hit with t inside t_range among scene.bounded_primitives(),
+/// found by walking scene.lab_bvh() (a leaf's order[i] indexes those primitives).
+std::optional<Hit> bvh_closest_hit(const Scene& scene, const Ray& ray, Interval t_range);
+/// True when any of scene.bounded_primitives() is hit with t inside t_range,
+/// walking scene.lab_bvh() and stopping at the first hit found.
+bool bvh_occluded(const Scene& scene, const Ray& ray, Interval t_range);
 
 } // namespace whitted

@@ -6,6 +6,7 @@
 // changes, so any number of threads may query it at the same time.
 #pragma once
 
+#include "whitted/bvh_tree.hpp"
 #include "whitted/camera.hpp"
 #include "whitted/material.hpp"
 #include "whitted/primitive.hpp"
@@ -19,9 +20,15 @@
 
 namespace whitted {
 
-/// The acceleration structure a student build traverses (P3F `accel`); the
-/// reference renderer always uses the framework's own BVH.
+/// The acceleration structure the scene's queries use (P3F `accel`): none tests
+/// every primitive; bvh walks a bounding volume hierarchy; grid is read and,
+/// the framework having no uniform grid, answered by the BVH.
 enum class Acceleration { none, grid, bvh };
+
+/// Whose hierarchy a scene walks for Acceleration::bvh: the framework's, or
+/// the one lab 10 builds and traverses (from the BVH stage on). The reference
+/// renderer's leaf kernels always walk the framework's.
+enum class BvhChoice { framework, lab };
 
 /// Everything a scene file says, as plain values.
 struct SceneData {
@@ -58,7 +65,7 @@ class Scene {
     /// Takes the data and builds the acceleration structure over its primitives.
     /// With `kernels` (the reference renderer's), leaves are tested with them
     /// instead of the labs' code (see leaf_kernels.hpp).
-    explicit Scene(SceneData data, const LeafKernels* kernels = nullptr);
+    explicit Scene(SceneData data, const LeafKernels* kernels = nullptr, BvhChoice bvh = BvhChoice::framework);
 
     const Camera& camera() const { return data_.camera; }
     const Color& background() const { return data_.background; }
@@ -75,6 +82,14 @@ class Scene {
     /// The file's area lights.
     std::span<const AreaLight> area_lights() const { return data_.area_lights; }
     std::span<const Primitive> primitives() const { return data_.primitives; }
+    /// The primitives with a bounding box (all but infinite planes): the first ones of primitives().
+    std::span<const Primitive> bounded_primitives() const { return primitives().first(bounded_count_); }
+    /// The acceleration structure the file asks for.
+    Acceleration acceleration() const { return data_.acceleration; }
+    /// Lab 10's hierarchy over bounded_primitives(), built by its build_bvh() the
+    /// first time it is asked for (then kept) and checked: a tree that is not a
+    /// hierarchy over those primitives throws std::runtime_error saying why.
+    const BvhTree& lab_bvh() const;
     int max_depth() const { return data_.max_depth; }
 
     /// The number of materials; a hit's material index must be below it.
@@ -105,12 +120,16 @@ class Scene {
 
   private:
     std::optional<Hit> closest_hit_with_kernels(const Ray& ray, Interval t_range) const;
+    bool walks_lab_bvh() const { return bvh_choice_ == BvhChoice::lab && data_.acceleration != Acceleration::none; }
     bool occluded_with_kernels(const Ray& ray, Interval t_range) const;
     void apply_vertex_normals(Hit& hit, const Ray& ray) const;
 
     SceneData data_;             // primitives: the BVH's ones first, in BVH order, then infinite planes
     std::size_t bounded_count_ = 0;
     std::shared_ptr<const WideBvh> bvh_; // built once, shared by copies (a scene never changes)
+    struct LabBvh;
+    std::shared_ptr<LabBvh> lab_bvh_;    // lab 10's tree, built on first use, shared by copies
+    BvhChoice bvh_choice_ = BvhChoice::framework;
     const LeafKernels* kernels_ = nullptr;
     const RemoteSceneQueries* remote_ = nullptr; // remote_scene_queries(), looked up once
     std::vector<std::uint32_t> source_index_; // for each primitive, its index in the SceneData given
