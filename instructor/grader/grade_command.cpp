@@ -77,9 +77,9 @@ fs::path make_work_folder() {
 }
 
 void print_table(const GradingResult& result, const fs::path& out) {
-    std::printf("%-15s %7s / %-7s %s\n", "lab", "points", "max", "tests");
+    std::printf("%-17s %7s / %-7s %s\n", "lab", "points", "max", "tests");
     for (const LabResult& lab : result.labs) std::printf("%s\n", lab_summary_line(lab, Audience::instructor).c_str());
-    std::printf("%-15s %7s / %-7s\n", "total", format_points(result.score_cents).c_str(), format_points(result.max_cents).c_str());
+    std::printf("%-17s %7s / %-7s\n", "total", format_points(result.score_cents).c_str(), format_points(result.max_cents).c_str());
     for (const LabResult& lab : result.labs)
         for (const std::string& note : lab.notes) std::printf("note: %s: %s\n", lab.lab.c_str(), note.c_str());
     std::printf("wrote %s and %s\n", (out / "results.json").c_str(), (out / "report.html").c_str());

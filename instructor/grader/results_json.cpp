@@ -46,7 +46,7 @@ std::string status_counts(const LabResult& lab, Audience audience) {
 
 std::string lab_summary_line(const LabResult& lab, Audience audience) {
     char line[512];
-    std::snprintf(line, sizeof line, "%-15s %7s / %-7s %s", lab.lab.c_str(), format_points(lab.score_cents).c_str(),
+    std::snprintf(line, sizeof line, "%-17s %7s / %-7s %s", lab.lab.c_str(), format_points(lab.score_cents).c_str(),
                   format_points(lab.max_cents).c_str(), status_counts(lab, audience).c_str());
     return line;
 }
