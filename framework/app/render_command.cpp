@@ -111,8 +111,6 @@ int run_render(const RenderOptions& options) {
         loaded.data.acceleration = *options.acceleration == "none"   ? Acceleration::none
                                    : *options.acceleration == "grid" ? Acceleration::grid
                                                                      : Acceleration::bvh;
-    if (loaded.data.acceleration == Acceleration::grid)
-        std::fprintf(stderr, "note: the framework has no uniform grid (accel 1); the bounding volume hierarchy answers\n");
     if (settings.samples_per_pixel > 0 && settings.stage < stage_number(Stage::anti_aliasing) && !options.pass)
         std::fprintf(stderr, "note: %d samples per pixel need lab 7 (anti-aliasing); stage %d traces one ray through "
                              "each pixel centre\n", settings.samples_per_pixel, settings.stage);
@@ -209,8 +207,8 @@ Command add_render_command(CLI::App& app) {
         ->check(CLI::Range(0, 65536));
     render_command->add_option("--accel", options->acceleration,
                                "Acceleration structure: none = test every primitive with every ray; bvh = a bounding "
-                               "volume hierarchy (the framework's, or from stage 10 your lab 10's); grid = the BVH "
-                               "(the framework has no uniform grid) (default: the scene's accel, else bvh)")
+                               "volume hierarchy (the framework's, or from stage 10 your lab 10's); grid = a uniform grid "
+                               "(default: the scene's accel, else bvh)")
         ->check(CLI::IsMember({"none", "grid", "bvh"}));
     render_command->add_option("--threads", options->threads, "Rendering threads; 0 = one per core (default 0)")
         ->check(CLI::Range(0, 1024));

@@ -2,6 +2,7 @@
 
 #include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/engine/remote_queries.hpp"
+#include "whitted/engine/uniform_grid.hpp"
 #include "whitted/engine/vertex_normals.hpp"
 #include "whitted/engine/wide_bvh.hpp"
 #include "whitted/labs.hpp"
@@ -79,6 +80,8 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
         source_index_.push_back(unbounded_index[i]);
     }
     for (std::size_t i = 0; i < data_.primitives.size(); ++i) data_.primitives[i].index = static_cast<std::uint32_t>(i);
+    if (data_.acceleration == Acceleration::grid)
+        grid_ = std::make_shared<const UniformGrid>(primitive_boxes(bounded_primitives()));
     // Each area light's points draw numbers of their own: no two lights share them.
     std::uint32_t next_number = 0;
     for (AreaLight& light : data_.area_lights) {
@@ -87,7 +90,7 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
     }
 }
 
-std::size_t Scene::acceleration_bytes() const { return bvh_->bytes(); }
+std::size_t Scene::acceleration_bytes() const { return grid_ ? grid_->bytes() : bvh_->bytes(); }
 
 const BvhTree& Scene::lab_bvh() const {
     // A build that throws (not written yet) leaves the flag unset: the next call tries again.
@@ -117,6 +120,13 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     const std::span<const Primitive> all = data_.primitives;
     if (data_.acceleration == Acceleration::none) { // every primitive, one after the other: the slow way, on purpose
         std::optional<Hit> nearest = whitted::closest_hit(ray, all, t_range);
+        if (nearest) apply_vertex_normals(*nearest, ray);
+        return nearest;
+    }
+    if (grid_) { // the planes, then the grid's cells along the ray
+        std::optional<Hit> nearest = whitted::closest_hit(ray, all.subspan(bounded_count_), t_range);
+        if (nearest) t_range.max = nearest->t;
+        if (std::optional<Hit> hit = grid_->closest_hit(ray, bounded_primitives(), t_range)) nearest = hit;
         if (nearest) apply_vertex_normals(*nearest, ray);
         return nearest;
     }
@@ -158,6 +168,11 @@ bool Scene::occluded(const Ray& ray, Interval t_range) const {
         for (const Primitive& primitive : all)
             if (intersect(ray, primitive, t_range)) return true;
         return false;
+    }
+    if (grid_) {
+        for (const Primitive& plane : all.subspan(bounded_count_))
+            if (intersect(ray, plane, t_range)) return true;
+        return grid_->occluded(ray, bounded_primitives(), t_range);
     }
     if (kernels_) return occluded_with_kernels(ray, t_range);
     if (remote_) [[unlikely]]

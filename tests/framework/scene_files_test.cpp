@@ -1,13 +1,16 @@
 // Loading scene files from disk: dialect by extension, file-system errors, and the real SPD scenes.
+#include "whitted/generators.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 using namespace whitted;
 namespace fs = std::filesystem;
@@ -121,6 +124,35 @@ TEST(SceneFiles, TheCourseDepthOfFieldSceneRendersWithSamplesSkyAndLens) {
     EXPECT_GT(pixels_apart(picture(loaded.data.camera.aperture, 0)), 80 * 60 / 20) << "9 samples a pixel smooth the picture";
     const Color sky = full.pixels[0]; // the top-left corner looks into the sky, over the floor's horizon
     EXPECT_GT(sky.r + sky.g + sky.b, 0.1);
+}
+
+TEST(SceneFiles, AHundredThousandTriangleMeshWithAccel2RendersThroughEveryStructure) {
+    // The course's big-model scene: `whitted generate torus --level 5` writes one P3F mesh of
+    // 100,352 triangles with `accel 2`. Its picture through lab 10's BVH (stage 10), the
+    // framework's BVH (stage 9) and the uniform grid is the same, bit for bit.
+    std::ostringstream text;
+    write_torus_p3f(5, text);
+    const std::filesystem::path file = std::filesystem::path(WHITTED_BINARY_DIR) / "torus5_test.p3f";
+    std::ofstream(file) << text.str();
+    LoadedScene loaded = load_scene(file);
+    EXPECT_TRUE(loaded.warnings.empty());
+    EXPECT_EQ(loaded.data.acceleration, Acceleration::bvh);
+    EXPECT_EQ(loaded.data.primitives.size(), 100352u + 1u) << "the mesh's triangles and the floor";
+    loaded.data.camera = loaded.data.camera.with_resolution(64, 48);
+    const auto picture = [&](Acceleration acceleration, BvhChoice bvh, int stage) {
+        SceneData data = loaded.data;
+        data.acceleration = acceleration;
+        RenderSettings settings;
+        settings.stage = stage;
+        return render(Scene(std::move(data), nullptr, bvh), settings, 2).image;
+    };
+    const Image lab = picture(Acceleration::bvh, BvhChoice::lab, stage_number(Stage::bvh));
+    const Image framework = picture(Acceleration::bvh, BvhChoice::framework, stage_number(Stage::depth_of_field));
+    const Image grid = picture(Acceleration::grid, BvhChoice::framework, stage_number(Stage::depth_of_field));
+    ASSERT_EQ(lab.pixels.size(), framework.pixels.size());
+    EXPECT_EQ(0, std::memcmp(lab.pixels.data(), framework.pixels.data(), lab.pixels.size() * sizeof(Color)));
+    EXPECT_EQ(0, std::memcmp(grid.pixels.data(), framework.pixels.data(), grid.pixels.size() * sizeof(Color)));
+    std::filesystem::remove(file);
 }
 
 TEST(SceneFiles, EverySpdSceneLoadsWithTheExpectedContent) {

@@ -21,8 +21,7 @@
 namespace whitted {
 
 /// The acceleration structure the scene's queries use (P3F `accel`): none tests
-/// every primitive; bvh walks a bounding volume hierarchy; grid is read and,
-/// the framework having no uniform grid, answered by the BVH.
+/// every primitive; grid walks a uniform grid; bvh walks a bounding volume hierarchy.
 enum class Acceleration { none, grid, bvh };
 
 /// Whose hierarchy a scene walks for Acceleration::bvh: the framework's, or
@@ -57,6 +56,7 @@ struct QueryCost {
 // The engine behind the queries (whitted/engine/): the BVH, the reference
 // renderer's leaf kernels, the queries of a grading's other process.
 class WideBvh;
+class UniformGrid;
 struct LeafKernels;
 struct RemoteSceneQueries;
 
@@ -127,6 +127,7 @@ class Scene {
     SceneData data_;             // primitives: the BVH's ones first, in BVH order, then infinite planes
     std::size_t bounded_count_ = 0;
     std::shared_ptr<const WideBvh> bvh_; // built once, shared by copies (a scene never changes)
+    std::shared_ptr<const UniformGrid> grid_; // accel grid only
     struct LabBvh;
     std::shared_ptr<LabBvh> lab_bvh_;    // lab 10's tree, built on first use, shared by copies
     BvhChoice bvh_choice_ = BvhChoice::framework;
