@@ -258,6 +258,12 @@ inline AreaLight square_light(const Point3& center, double size, int samples, Co
     return light;
 }
 
+/// Expects `got` within 1e-15 of (x, y) in each coordinate (places in a pixel, points of the unit disk).
+inline void expect_vec2(Vec2 got, double x, double y, const std::string& what) {
+    EXPECT_NEAR(got.x, x, 1e-15) << what << ": x";
+    EXPECT_NEAR(got.y, y, 1e-15) << what << ": y";
+}
+
 /// Expects `got` within 1e-12 of `expected` in each coordinate.
 inline void expect_point(const Point3& got, const Point3& expected, const std::string& what) {
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], expected[i], 1e-12) << what << ", coordinate " << i;
@@ -361,9 +367,7 @@ inline std::vector<Ray> bvh_test_rays(const Camera& camera, double size, std::ui
     std::vector<Ray> rays;
     for (int y = 0; y < camera.res_y; ++y)
         for (int x = 0; x < camera.res_x; ++x) {
-            const Vec3 p = camera.w * ((x + 0.5) / camera.res_x - 0.5) * camera.xe +
-                           camera.h * ((y + 0.5) / camera.res_y - 0.5) * camera.ye - camera.df * camera.ze;
-            rays.push_back(Ray{camera.eye, glm::normalize(p)});
+            rays.push_back(Ray{camera.eye, glm::normalize(view_plane_offset(camera, x + 0.5, y + 0.5))});
         }
     TestNumbers numbers{seed};
     for (int i = 0; i < 200; ++i) rays.push_back(Ray{numbers.point(size), glm::normalize(numbers.point(1.0) + Vec3(1e-3))});

@@ -120,7 +120,7 @@ class Scene {
 
   private:
     std::optional<Hit> closest_hit_with_kernels(const Ray& ray, Interval t_range) const;
-    bool walks_lab_bvh() const { return bvh_choice_ == BvhChoice::lab && data_.acceleration != Acceleration::none; }
+    bool walks_lab_bvh() const { return bvh_choice_ == BvhChoice::lab && data_.acceleration == Acceleration::bvh; }
     bool occluded_with_kernels(const Ray& ray, Interval t_range) const;
     void apply_vertex_normals(Hit& hit, const Ray& ray) const;
 

@@ -12,46 +12,37 @@
 using namespace whitted;
 using namespace whitted::testing_helpers;
 
-namespace {
-
-void expect_place(Vec2 got, double x, double y, const std::string& what) {
-    EXPECT_NEAR(got.x, x, 1e-15) << what << ": x";
-    EXPECT_NEAR(got.y, y, 1e-15) << what << ": y";
-}
-
-} // namespace
-
 TEST(StratifiedSample, FourSamplesWithUAtOneHalfAreTheCentresOfTheQuarters) {
     // 2 x 2 cells; u = (0.5, 0.5) is the middle of each: (col + 0.5) / 2, (row + 0.5) / 2.
     const Vec2 half(0.5, 0.5);
-    expect_place(stratified_sample(0, 4, half), 0.25, 0.25, "sample 0 (bottom left)");
-    expect_place(stratified_sample(1, 4, half), 0.75, 0.25, "sample 1 (bottom right)");
-    expect_place(stratified_sample(2, 4, half), 0.25, 0.75, "sample 2 (top left)");
-    expect_place(stratified_sample(3, 4, half), 0.75, 0.75, "sample 3 (top right)");
+    expect_vec2(stratified_sample(0, 4, half), 0.25, 0.25, "sample 0 (bottom left)");
+    expect_vec2(stratified_sample(1, 4, half), 0.75, 0.25, "sample 1 (bottom right)");
+    expect_vec2(stratified_sample(2, 4, half), 0.25, 0.75, "sample 2 (top left)");
+    expect_vec2(stratified_sample(3, 4, half), 0.75, 0.75, "sample 3 (top right)");
 }
 
 TEST(StratifiedSample, UPlacesTheSampleWithinItsCell) {
     // 3 x 3 cells of side 1/3: sample 5 is column 2, row 1; u = (0.25, 0.75) puts it at
     // ((2 + 0.25) / 3, (1 + 0.75) / 3) = (0.75, 0.583333...).
-    expect_place(stratified_sample(5, 9, Vec2(0.25, 0.75)), 0.75, 1.75 / 3.0, "sample 5 of 9");
+    expect_vec2(stratified_sample(5, 9, Vec2(0.25, 0.75)), 0.75, 1.75 / 3.0, "sample 5 of 9");
     // u = (0, 0) is the cell's bottom-left corner.
-    expect_place(stratified_sample(4, 9, Vec2(0.0, 0.0)), 1.0 / 3.0, 1.0 / 3.0, "sample 4 of 9 at u = 0");
+    expect_vec2(stratified_sample(4, 9, Vec2(0.0, 0.0)), 1.0 / 3.0, 1.0 / 3.0, "sample 4 of 9 at u = 0");
 }
 
 TEST(StratifiedSample, ACountThatIsNotASquareUsesTheSquarestGrid) {
     // 8 = 4 x 2: sample 5 is column 1, row 1 -> ((1 + 0.5) / 4, (1 + 0.5) / 2).
-    expect_place(stratified_sample(5, 8, Vec2(0.5, 0.5)), 0.375, 0.75, "sample 5 of 8 (4 x 2)");
+    expect_vec2(stratified_sample(5, 8, Vec2(0.5, 0.5)), 0.375, 0.75, "sample 5 of 8 (4 x 2)");
     // 6 = 3 x 2: sample 4 is column 1, row 1.
-    expect_place(stratified_sample(4, 6, Vec2(0.5, 0.5)), 0.5, 0.75, "sample 4 of 6 (3 x 2)");
+    expect_vec2(stratified_sample(4, 6, Vec2(0.5, 0.5)), 0.5, 0.75, "sample 4 of 6 (3 x 2)");
     // 12 = 4 x 3: sample 11 is column 3, row 2.
-    expect_place(stratified_sample(11, 12, Vec2(0.0, 0.0)), 0.75, 2.0 / 3.0, "sample 11 of 12 (4 x 3)");
+    expect_vec2(stratified_sample(11, 12, Vec2(0.0, 0.0)), 0.75, 2.0 / 3.0, "sample 11 of 12 (4 x 3)");
     // 5 is prime: 5 x 1, five columns the height of the pixel.
-    expect_place(stratified_sample(3, 5, Vec2(0.5, 0.5)), 0.7, 0.5, "sample 3 of 5 (5 x 1)");
-    expect_place(stratified_sample(1, 2, Vec2(0.5, 0.25)), 0.75, 0.25, "sample 1 of 2 (2 x 1)");
+    expect_vec2(stratified_sample(3, 5, Vec2(0.5, 0.5)), 0.7, 0.5, "sample 3 of 5 (5 x 1)");
+    expect_vec2(stratified_sample(1, 2, Vec2(0.5, 0.25)), 0.75, 0.25, "sample 1 of 2 (2 x 1)");
 }
 
 TEST(StratifiedSample, OneSampleIsAnywhereInThePixel) {
-    expect_place(stratified_sample(0, 1, Vec2(0.3, 0.8)), 0.3, 0.8, "the only sample");
+    expect_vec2(stratified_sample(0, 1, Vec2(0.3, 0.8)), 0.3, 0.8, "the only sample");
 }
 
 TEST(StratifiedSample, EverySampleLiesInItsOwnCellOfThePixel) {

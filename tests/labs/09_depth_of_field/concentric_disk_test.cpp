@@ -14,15 +14,6 @@
 using namespace whitted;
 using namespace whitted::testing_helpers;
 
-namespace {
-
-void expect_disk_point(Vec2 got, double x, double y, const std::string& what) {
-    EXPECT_NEAR(got.x, x, 1e-15) << what << ": x";
-    EXPECT_NEAR(got.y, y, 1e-15) << what << ": y";
-}
-
-} // namespace
-
 TEST(ConcentricDisk, TheCentreOfTheSquareIsTheCentreOfTheDisk) {
     // u = (1/2, 1/2): a = (0, 0), which has no angle: the centre itself.
     const Vec2 d = concentric_disk(Vec2(0.5, 0.5));
@@ -32,36 +23,36 @@ TEST(ConcentricDisk, TheCentreOfTheSquareIsTheCentreOfTheDisk) {
 
 TEST(ConcentricDisk, TheMiddlesOfTheSquaresEdgesGoToTheCircle) {
     // u = (0, 1/2): a = (-1, 0), the left wedge: r = -1, angle 0 -> (-1, 0).
-    expect_disk_point(concentric_disk(Vec2(0.0, 0.5)), -1.0, 0.0, "left edge");
+    expect_vec2(concentric_disk(Vec2(0.0, 0.5)), -1.0, 0.0, "left edge");
     // u = (1/2, 0): a = (0, -1), the lower wedge: r = -1, angle pi/2 -> (0, -1).
-    expect_disk_point(concentric_disk(Vec2(0.5, 0.0)), 0.0, -1.0, "bottom edge");
+    expect_vec2(concentric_disk(Vec2(0.5, 0.0)), 0.0, -1.0, "bottom edge");
     // The right and top edges (u = 1, the limit of [0, 1)): (1, 0) and (0, 1).
-    expect_disk_point(concentric_disk(Vec2(1.0, 0.5)), 1.0, 0.0, "right edge");
-    expect_disk_point(concentric_disk(Vec2(0.5, 1.0)), 0.0, 1.0, "top edge");
+    expect_vec2(concentric_disk(Vec2(1.0, 0.5)), 1.0, 0.0, "right edge");
+    expect_vec2(concentric_disk(Vec2(0.5, 1.0)), 0.0, 1.0, "top edge");
 }
 
 TEST(ConcentricDisk, TheCornerGoesToTheCircleOnItsDiagonal) {
     // u = (0, 0): a = (-1, -1), |a.x| = |a.y|: r = a.y = -1, angle pi/2 - pi/4 = pi/4
     // -> -(cos 45, sin 45) = (-0.7071068, -0.7071068).
-    expect_disk_point(concentric_disk(Vec2(0.0, 0.0)), -std::sqrt(0.5), -std::sqrt(0.5), "corner (0, 0)");
+    expect_vec2(concentric_disk(Vec2(0.0, 0.0)), -std::sqrt(0.5), -std::sqrt(0.5), "corner (0, 0)");
 }
 
 TEST(ConcentricDisk, InteriorPointsComputedByHand) {
     // u = (0.75, 0.625): a = (0.5, 0.25), the right wedge: r = 0.5, angle (pi/4)(0.5) = pi/8
     // -> (0.5 cos 22.5, 0.5 sin 22.5) = (0.4619398, 0.1913417).
-    expect_disk_point(concentric_disk(Vec2(0.75, 0.625)), 0.5 * std::cos(kPi / 8.0), 0.5 * std::sin(kPi / 8.0),
+    expect_vec2(concentric_disk(Vec2(0.75, 0.625)), 0.5 * std::cos(kPi / 8.0), 0.5 * std::sin(kPi / 8.0),
                       "u = (0.75, 0.625)");
     // u = (0.125, 0.625): a = (-0.75, 0.25), the left wedge: r = -0.75, angle (pi/4)(-1/3) = -15 degrees
     // -> -0.75 (cos 15, -sin 15) = (-0.7244444, 0.1941143).
-    expect_disk_point(concentric_disk(Vec2(0.125, 0.625)), -0.75 * std::cos(kPi / 12.0), 0.75 * std::sin(kPi / 12.0),
+    expect_vec2(concentric_disk(Vec2(0.125, 0.625)), -0.75 * std::cos(kPi / 12.0), 0.75 * std::sin(kPi / 12.0),
                       "u = (0.125, 0.625)");
     // u = (0.6, 0.9): a = (0.2, 0.8), the upper wedge: r = 0.8, angle pi/2 - (pi/4)(1/4) = 78.75 degrees
     // -> (0.8 cos 78.75, 0.8 sin 78.75) = (0.1560723, 0.7846282).
-    expect_disk_point(concentric_disk(Vec2(0.6, 0.9)), 0.8 * std::cos(7.0 * kPi / 16.0), 0.8 * std::sin(7.0 * kPi / 16.0),
+    expect_vec2(concentric_disk(Vec2(0.6, 0.9)), 0.8 * std::cos(7.0 * kPi / 16.0), 0.8 * std::sin(7.0 * kPi / 16.0),
                       "u = (0.6, 0.9)");
     // u = (0.375, 0.125): a = (-0.25, -0.75), the lower wedge: r = -0.75, angle pi/2 - (pi/4)(1/3) = 75 degrees
     // -> -0.75 (cos 75, sin 75) = (-0.1941143, -0.7244444).
-    expect_disk_point(concentric_disk(Vec2(0.375, 0.125)), -0.75 * std::cos(5.0 * kPi / 12.0),
+    expect_vec2(concentric_disk(Vec2(0.375, 0.125)), -0.75 * std::cos(5.0 * kPi / 12.0),
                       -0.75 * std::sin(5.0 * kPi / 12.0), "u = (0.375, 0.125)");
 }
 
