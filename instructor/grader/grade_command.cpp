@@ -11,6 +11,7 @@
 #include "grader/text.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -36,6 +37,7 @@ struct GradeOptions {
     int memory_mb = 2048;
     long max_processes = 0;
     std::string sandbox = "auto";
+    std::string hidden_visibility = "hidden";
     bool quiet = false;
 };
 
@@ -59,10 +61,15 @@ void check_folder(const fs::path& folder, const char* mark, const std::string& o
         throw UsageError(folder.string() + " exists and is not the grader's; choose a new or empty " + option);
 }
 
+// Written whole or not at all (a new name, then renamed): a grader killed mid-write leaves no half a results.json.
 void write_file(const fs::path& file, const std::string& text) {
-    std::ofstream stream(file, std::ios::binary);
-    stream << text;
-    if (!stream.flush()) throw GraderFailure("cannot write " + file.string());
+    const fs::path part = file.string() + ".part";
+    {
+        std::ofstream stream(part, std::ios::binary | std::ios::trunc);
+        stream << text;
+        if (!stream.flush()) throw GraderFailure("cannot write " + file.string());
+    }
+    fs::rename(part, file);
 }
 
 // A new folder of the grader's for the kit and the workers: private to others
@@ -94,10 +101,16 @@ int run_grade(const GradeOptions& options) {
         throw UsageError(setup.instructor_tree.string() + " is not an instructor tree (no CMakeLists.txt, solution/ or instructor/rubric.json)");
     const std::vector<std::string> labs = lab_names();
     const fs::path submission = fs::weakly_canonical(fs::absolute(options.submission));
-    setup.submission_labs = find_lab_folder(submission, labs);
+    GradingProblem problem;
+    try {
+        setup.submission_labs = find_lab_folder(submission, labs);
+    } catch (const AmbiguousSubmission& error) {
+        problem = {GradingProblem::Kind::submission, error.what()};
+        setup.submission_labs = {submission, "", 0};
+    }
     setup.out = fs::weakly_canonical(fs::absolute(options.out));
     setup.instructor_build = fs::weakly_canonical(fs::absolute(options.instructor_build));
-    check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs, setup.instructor_tree, setup.instructor_build});
+    check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs.folder, setup.instructor_tree, setup.instructor_build});
     fs::create_directories(setup.out);
     // The grader's user alone: the copied labs and the report of an earlier grading (of the solution, say) are answers.
     fs::permissions(setup.out, fs::perms::owner_all);
@@ -127,8 +140,15 @@ int run_grade(const GradeOptions& options) {
         };
 
     GradingResult result;
-    std::string problem;
     int code = 0;
+    if (!problem.message.empty()) {
+        // The student's to fix: results.json says what was found, and nothing is built or run.
+        write_file(setup.out / "results.json", results_json(result, problem, options.hidden_visibility));
+        write_file(setup.out / "report.html", html_report(result, problem));
+        std::fprintf(stderr, "whitted grade: %s\n", problem.message.c_str());
+        std::printf("wrote %s and %s\n", (setup.out / "results.json").c_str(), (setup.out / "report.html").c_str());
+        return 2;
+    }
     try {
         std::vector<std::string> known = labs;
         known.push_back("integration");
@@ -137,16 +157,16 @@ int run_grade(const GradeOptions& options) {
         result = grade_submission(setup);
         code = result.max_cents > 0 && result.score_cents == result.max_cents ? 0 : 1;
     } catch (const std::exception& error) { // RubricError, GraderFailure, file system errors
-        problem = replace_paths(error.what(), shown_paths(setup));
+        problem = {GradingProblem::Kind::grader, replace_paths(error.what(), shown_paths(setup))};
         code = 3;
     }
     if (!setup.work.empty()) {
         std::error_code ignored;
         fs::remove_all(setup.work, ignored);
     }
-    write_file(setup.out / "results.json", results_json(result, problem));
+    write_file(setup.out / "results.json", results_json(result, problem, options.hidden_visibility));
     write_file(setup.out / "report.html", html_report(result, problem));
-    if (!problem.empty()) std::fprintf(stderr, "whitted grade: grader failure: %s\n", problem.c_str());
+    if (!problem.message.empty()) std::fprintf(stderr, "whitted grade: grader failure: %s\n", problem.message.c_str());
     print_table(result, setup.out);
     // For the instructor only: results.json and report.html are the student's to see.
     if (!result.fences.empty()) std::printf("student code ran in %s\n", result.fences.c_str());
@@ -160,7 +180,9 @@ Command add_grade_command(CLI::App& app) {
     auto options = std::make_shared<GradeOptions>();
     CLI::App* command = app.add_subcommand("grade", "Grade a student's labs against the instructor tree (instructors).");
     command->footer("Exit code: 0 full marks, 1 points lost, 2 usage error, 3 grader failure.");
-    command->add_option("submission", options->submission, "A student tree, its labs/ folder, or a folder with the NN_*.cpp lab files")
+    command->add_option("submission", options->submission,
+                        "The student's submission: the lab files (NN_*.cpp) at its top, in its labs/, or one folder down "
+                        "(my-project/ or my-project/labs/)")
         ->required()
         ->check(CLI::ExistingDirectory);
     command->add_option("--out", options->out, "Folder for results.json, report.html, the copied labs and each test's files (default ./grading)");
@@ -189,6 +211,10 @@ Command add_grade_command(CLI::App& app) {
     command->add_flag("--allow-exposed-answers", options->allow_exposed_answers,
                       "Grade even where the student's code could read the answers (no bubblewrap, and not root or the "
                       "instructor files readable to other users); the grades can then be forged");
+    command->add_option("--hidden-visibility", options->hidden_visibility,
+                        "When Gradescope shows the student a hidden test's status and points: hidden (never, the default), "
+                        "after_due_date, after_published or visible; its details are never shown")
+        ->check(CLI::IsMember(std::vector<std::string>(std::begin(kVisibilities), std::end(kVisibilities))));
     command->add_flag("-q,--quiet", options->quiet, "Print only the table");
     return Command{command, [options] {
                        try {

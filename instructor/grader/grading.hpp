@@ -8,6 +8,7 @@
 #include "grader/rubric.hpp"
 #include "grader/sandbox.hpp"
 #include "grader/scoring.hpp"
+#include "grader/submission.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -25,7 +26,7 @@ struct GraderFailure : std::runtime_error {
 struct GradingSetup {
     std::filesystem::path instructor_tree;  // absolute
     std::filesystem::path instructor_build; // absolute; its checkers and grading kit are used (brought up to date first)
-    std::filesystem::path submission_labs;  // where the submission's lab files are
+    LabFolder submission_labs;              // where the submission's lab files are (find_lab_folder)
     std::filesystem::path out;              // absolute; labs/ and tests/ are written here
     std::filesystem::path work;             // absolute; a new private folder for the kit and the workers (removed after)
     Rubric rubric;

@@ -109,11 +109,13 @@ std::string test_card(const LabResult& lab, const ScoredTest& test, const std::s
 
 } // namespace
 
-std::string html_report(const GradingResult& result, const std::string& problem) {
+std::string html_report(const GradingResult& result, const GradingProblem& problem) {
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Grading report</title><style>" +
                        std::string(kStyle) + "</style></head><body>\n<h1>Grading report: " +
                        format_points(result.score_cents) + " / " + format_points(result.max_cents) + "</h1>\n";
-    if (!problem.empty()) html += "<h2>The grader failed</h2><pre>" + escape(problem) + "</pre>\n";
+    if (!problem.message.empty())
+        html += std::string(problem.kind == GradingProblem::Kind::grader ? "<h2>The grader failed</h2><pre>" : "<h2>Your submission was not graded</h2><pre>") +
+                escape(problem.message) + "</pre>\n";
     html += "<table><tr><th>lab</th><th>points</th><th>tests</th></tr>\n";
     for (const LabResult& lab : result.labs) {
         html += "<tr><td>" + escape(lab.title) + "</td><td>" + format_points(lab.score_cents) + " / " +

@@ -4,12 +4,13 @@
 #pragma once
 
 #include "grader/grading.hpp"
+#include "grader/results_json.hpp"
 
 #include <string>
 
 namespace whitted::grade {
 
 /// The page's HTML.
-std::string html_report(const GradingResult& result, const std::string& problem = {});
+std::string html_report(const GradingResult& result, const GradingProblem& problem = {});
 
 } // namespace whitted::grade

@@ -51,13 +51,17 @@ std::string lab_summary_line(const LabResult& lab, Audience audience) {
     return line;
 }
 
-std::string results_json(const GradingResult& result, const std::string& problem) {
+std::string results_json(const GradingResult& result, const GradingProblem& problem, const std::string& hidden_visibility) {
     ordered_json root;
-    root["score"] = points(problem.empty() ? result.score_cents : 0);
+    const bool failed = !problem.message.empty();
+    root["score"] = points(failed ? 0 : result.score_cents);
     std::string output;
-    if (!problem.empty()) output = "The grader failed; this is not your fault. Please tell your instructor.\n" + problem + "\n";
+    if (failed && problem.kind == GradingProblem::Kind::grader)
+        output = "The grader failed; this is not your fault. Please tell your instructor.\n" + problem.message + "\n";
+    else if (failed)
+        output = "Your submission was not graded: " + problem.message + "\n";
     for (const LabResult& lab : result.labs) output += lab_summary_line(lab, Audience::student) + "\n";
-    if (problem.empty()) output += "total: " + format_points(result.score_cents) + " / " + format_points(result.max_cents) + "\n";
+    if (!failed) output += "total: " + format_points(result.score_cents) + " / " + format_points(result.max_cents) + "\n";
     root["output"] = output;
     root["output_format"] = "text";
     root["visibility"] = "visible";
@@ -79,7 +83,7 @@ std::string results_json(const GradingResult& result, const std::string& problem
             entry["output_format"] = "text";
             const std::string shown = std::string(status_name(student_status(o)));
             entry["tags"] = {lab.lab, test.rule.empty() ? "unscored" : test.rule, shown};
-            entry["visibility"] = is_hidden(o.name) ? "hidden" : "visible";
+            entry["visibility"] = is_hidden(o.name) ? hidden_visibility : "visible";
             entry["extra_data"] = {{"lab", lab.lab}, {"status", shown}, {"image", test.image_test}};
             if (!lab.compile_errors.empty() && o.status == Status::compile_error) entry["output"] = test_output(test) + "\n" + lab.compile_errors;
             root["tests"].push_back(entry);

@@ -8,8 +8,20 @@
 
 namespace whitted::grade {
 
-/// results.json's text. `problem` is a grader failure to report instead of results (score 0).
-std::string results_json(const GradingResult& result, const std::string& problem = {});
+/// Why a grading has no results (score 0): the grader failed, or the submission cannot be graded as it is.
+struct GradingProblem {
+    enum class Kind { grader, submission };
+    Kind kind = Kind::grader;
+    std::string message; // empty: no problem
+};
+
+/// When Gradescope shows the student a hidden test (its status and points only): "hidden" (never),
+/// "after_due_date", "after_published" or "visible".
+inline constexpr const char* kVisibilities[] = {"hidden", "after_due_date", "after_published", "visible"};
+
+/// results.json's text; hidden tests get `hidden_visibility` (one of kVisibilities).
+std::string results_json(const GradingResult& result, const GradingProblem& problem = {},
+                         const std::string& hidden_visibility = "hidden");
 
 /// Who reads a summary: the student sees hidden tests only as passed or failed (student_status).
 enum class Audience { student, instructor };

@@ -44,31 +44,78 @@ std::string read_regular_file(const fs::path& file, std::size_t max_bytes) {
     return content;
 }
 
-fs::path find_lab_folder(const fs::path& submission, const std::vector<std::string>& labs) {
-    const fs::path nested = submission / "labs";
+namespace {
+
+// How many of the lab files `folder` holds (links count: they are refused, with the reason, when copied).
+int lab_files_in(const fs::path& folder, const std::vector<std::string>& labs) {
     std::error_code error;
-    if (fs::is_symlink(nested, error) || !fs::is_directory(nested, error)) return submission;
+    if (!fs::is_directory(fs::symlink_status(folder, error))) return 0;
+    int count = 0;
     for (const std::string& lab : labs)
-        if (fs::exists(fs::symlink_status(nested / (lab + ".cpp"), error))) return nested;
-    return submission;
+        if (fs::exists(fs::symlink_status(folder / (lab + ".cpp"), error))) ++count;
+    return count;
 }
 
-std::map<std::string, std::string> copy_lab_files(const fs::path& from, const fs::path& stubs, const fs::path& to,
+// Folders a zip tool or the system adds, never the student's work.
+bool searched(const fs::directory_entry& entry) {
+    const std::string name = entry.path().filename().string();
+    std::error_code error;
+    return entry.is_directory(error) && !entry.is_symlink(error) && !name.empty() && name[0] != '.' && name != "__MACOSX";
+}
+
+std::string describe(const LabFolder& place) {
+    return (place.shown.empty() ? std::string("the top folder") : place.shown) + " (" + std::to_string(place.files) +
+           (place.files == 1 ? " file)" : " files)");
+}
+
+} // namespace
+
+LabFolder find_lab_folder(const fs::path& submission, const std::vector<std::string>& labs) {
+    std::vector<LabFolder> places;
+    auto look = [&](const fs::path& folder, const std::string& shown) {
+        if (const int files = lab_files_in(folder, labs)) places.push_back({folder, shown, files});
+    };
+    look(submission, "");
+    look(submission / "labs", "labs/");
+    std::vector<fs::path> subfolders;
+    std::error_code error;
+    for (fs::directory_iterator it(submission, error), end; !error && it != end; it.increment(error))
+        if (searched(*it) && it->path().filename() != "labs") subfolders.push_back(it->path());
+    std::sort(subfolders.begin(), subfolders.end()); // the message lists places in the same order every time
+    for (const fs::path& folder : subfolders) {
+        const std::string name = folder.filename().string();
+        look(folder, name + "/");
+        look(folder / "labs", name + "/labs/");
+    }
+    if (places.empty()) return LabFolder{submission, "", 0};
+    if (places.size() == 1) return places.front();
+    std::string found;
+    for (std::size_t i = 0; i < places.size(); ++i)
+        found += (i == 0 ? "" : i + 1 == places.size() ? " and " : ", ") + describe(places[i]);
+    throw AmbiguousSubmission("lab files were found in " + std::to_string(places.size()) + " places: " + found +
+                              ". Keep one copy of each file, all in one folder, and submit again.");
+}
+
+std::map<std::string, std::string> copy_lab_files(const LabFolder& from, const fs::path& stubs, const fs::path& to,
                                                   const std::vector<std::string>& labs) {
     fs::remove_all(to);
     fs::create_directories(to);
     std::map<std::string, std::string> refused;
     for (const std::string& lab : labs) {
         const std::string name = lab + ".cpp";
+        const std::string shown = from.shown + name;
         std::string content;
         std::error_code error;
-        if (!fs::exists(fs::symlink_status(from / name, error))) {
-            refused[lab] = "the submission has no labs/" + name;
+        if (from.files == 0) {
+            refused[lab] = "no lab file was found: the grader looks for " + name +
+                           " and the other lab files at the top of the submission, in labs/, or one folder down (my-project/labs/)";
+        } else if (!fs::exists(fs::symlink_status(from.folder / name, error))) {
+            refused[lab] = "the submission has no " + shown;
         } else {
             try {
-                content = read_regular_file(from / name, kMaxLabFileBytes);
+                content = read_regular_file(from.folder / name, kMaxLabFileBytes);
             } catch (const std::exception& why) {
-                refused[lab] = "labs/" + name + " " + why.what() + ": it is graded as missing";
+                refused[lab] = shown + " " + why.what() + ": it is graded as missing";
             }
         }
         if (refused.count(lab)) content = read_regular_file(stubs / name, kMaxLabFileBytes);

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,14 +19,29 @@ namespace whitted::grade {
 /// The largest lab file the grader copies.
 inline constexpr std::size_t kMaxLabFileBytes = 1 << 20;
 
-/// The folder holding the lab files: SUBMISSION/labs when it is a real folder
-/// (not a link) holding any of them, else SUBMISSION.
-std::filesystem::path find_lab_folder(const std::filesystem::path& submission, const std::vector<std::string>& labs);
+/// Where a submission's lab files are.
+struct LabFolder {
+    std::filesystem::path folder; // absolute
+    std::string shown;            // as the student knows it: "" (the top), "labs/", "my-project/labs/"
+    int files = 0;                // how many lab files it holds (0: none anywhere)
+};
 
-/// Copies <from>/<lab>.cpp for every lab into `to` (emptied first); a lab file
-/// that is missing or refused is replaced by the untouched stub from `stubs`.
+/// The lab files are in more than one place; the message names each (shown to the student).
+struct AmbiguousSubmission : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// Finds the one folder holding the lab files, where students put them: the
+/// top of the submission, its labs/, or one folder down (a zipped folder:
+/// my-project/ or my-project/labs/). Folders that are links, hidden folders and
+/// __MACOSX are not searched. Throws AmbiguousSubmission when lab files are in
+/// two of these places; returns the top with `files` 0 when there are none.
+LabFolder find_lab_folder(const std::filesystem::path& submission, const std::vector<std::string>& labs);
+
+/// Copies <from.folder>/<lab>.cpp for every lab into `to` (emptied first); a lab
+/// file that is missing or refused is replaced by the untouched stub from `stubs`.
 /// Returns, for each such lab, why ("the submission has no labs/01_ray_casting.cpp").
-std::map<std::string, std::string> copy_lab_files(const std::filesystem::path& from, const std::filesystem::path& stubs,
+std::map<std::string, std::string> copy_lab_files(const LabFolder& from, const std::filesystem::path& stubs,
                                                   const std::filesystem::path& to, const std::vector<std::string>& labs);
 
 /// The content of a regular file that is not a link, at most `max_bytes` long,

@@ -84,9 +84,33 @@ TEST(ResultsJson, AHiddenTestShowsOnlyPassedOrFailed) {
 TEST(ResultsJson, SameResultGivesTheSameBytes) { EXPECT_EQ(results_json(sample()), results_json(sample())); }
 
 TEST(ResultsJson, AGraderFailureStillWritesValidJsonWithScoreZero) {
-    const nlohmann::json json = nlohmann::json::parse(results_json(GradingResult{}, "configuring failed"));
+    const nlohmann::json json = nlohmann::json::parse(results_json(GradingResult{}, {GradingProblem::Kind::grader, "configuring failed"}));
     EXPECT_EQ(json["score"], 0.0);
     EXPECT_NE(json["output"].get<std::string>().find("configuring failed"), std::string::npos);
+    EXPECT_NE(json["output"].get<std::string>().find("not your fault"), std::string::npos);
+}
+
+TEST(ResultsJson, ASubmissionThatCannotBeGradedSaysWhyToTheStudent) {
+    const nlohmann::json json =
+        nlohmann::json::parse(results_json(sample(), {GradingProblem::Kind::submission, "lab files in 2 places"}));
+    EXPECT_EQ(json["score"], 0.0);
+    const std::string output = json["output"].get<std::string>();
+    EXPECT_EQ(output.rfind("Your submission was not graded: lab files in 2 places\n", 0), 0u) << output;
+    EXPECT_EQ(output.find("not your fault"), std::string::npos) << output;
+}
+
+// Gradescope shows a test marked after_due_date or after_published only then; visible tests stay visible.
+TEST(ResultsJson, HiddenTestsTakeTheVisibilityAsked) {
+    for (const char* visibility : kVisibilities) {
+        const nlohmann::json json = nlohmann::json::parse(results_json(sample(), {}, visibility));
+        int hidden = 0;
+        for (const nlohmann::json& test : json["tests"]) {
+            const bool is_hidden_test = test["name"].get<std::string>().find("Hidden") != std::string::npos;
+            EXPECT_EQ(test["visibility"], is_hidden_test ? visibility : "visible") << test["name"];
+            hidden += is_hidden_test;
+        }
+        EXPECT_GT(hidden, 0) << "the sample has a hidden test";
+    }
 }
 
 TEST(HtmlReport, ListsFailuresFirstAndLoadsNothingFromOutside) {
