@@ -8,6 +8,8 @@
 #   make sanitize every test built with AddressSanitizer + UBSan (instructor/docs/robustness.md)
 #   make fuzz     fuzz the loaders and the image reader, MINUTES each (instructor/docs/robustness.md)
 #   make test-hostile  the grader against hostile submissions (CI)
+#   make gradescope    the Gradescope autograder zip (instructor/docs/instructors.md, "Deploy")
+#   make test-gradescope  that zip in a root shaped like Gradescope's (CI)
 MAKEFLAGS += --no-print-directory
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
@@ -21,13 +23,18 @@ BENCH_SCENES ?= $(wildcard $(SPD_DIR)/teapot6.nff $(SPD_DIR)/mount6.nff $(SPD_DI
 BENCH_ARGS ?=
 
 MINUTES ?= 10
+# make gradescope: the zip and the choices it carries (instructor/scripts/make-autograder.sh).
+ZIP ?= autograder.zip
+HIDDEN_VISIBILITY ?= hidden
+TEST_TIMEOUT ?= 10
+BUDGET ?= 480
 
 # The tree's build mode (cmake/WhittedMode.cmake): instructor (solution/ and
 # instructor/ are here) or handout (the student's tree).
 MODE := $(shell sed -n 's/^set(WHITTED_DEFAULT_MODE \([a-z]*\))$$/\1/p' cmake/WhittedMode.cmake)
 INSTRUCTOR := $(filter instructor,$(MODE))
 
-.PHONY: all deps configure build render test bench sanitize fuzz test-grader test-report test-hostile references handout proofs clean
+.PHONY: all deps configure build render test bench sanitize fuzz test-grader test-report test-hostile references handout proofs gradescope test-gradescope clean
 
 all: build
 
@@ -87,6 +94,15 @@ test-report: build
 test-hostile: build
 	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash instructor/scripts/test-hostile.sh
 
+# Instructors: the Gradescope autograder (setup.sh, run_autograder, the tree); it needs no build.
+gradescope:
+	@bash instructor/scripts/make-autograder.sh --out "$(ZIP)" --hidden-visibility "$(HIDDEN_VISIBILITY)" \
+	  --timeout "$(TEST_TIMEOUT)" --budget "$(BUDGET)"
+
+# That zip unpacked in a folder shaped like Gradescope's /autograder: setup.sh, then submissions.
+test-gradescope: deps
+	@bash instructor/scripts/test-gradescope.sh
+
 # libFuzzer on the NFF and P3F loaders and the image reader, MINUTES each (build-fuzz/).
 fuzz: DEPS_ARGS = --fuzz
 fuzz: deps
@@ -108,7 +124,7 @@ proofs:
 	@bash instructor/scripts/prove-tests.sh
 else
 # The student handout has no reference solution: these are the instructor's.
-test-grader test-report test-hostile fuzz references handout proofs bench:
+test-grader test-report test-hostile fuzz references handout proofs bench gradescope test-gradescope:
 	@echo "make $@ is for instructors: it needs the instructor's tree (solution/ and instructor/)"; exit 2
 endif
 
