@@ -55,8 +55,8 @@ std::string bash_script(const CLI::App& root) {
 Command add_completion_command(CLI::App& app) {
     CLI::App* command = app.add_subcommand("completion", "Print a script that completes commands, options and file "
                                                          "names when you press Tab in bash.");
-    auto shell = std::make_shared<std::string>();
-    command->add_option("shell", *shell, "The shell: bash (the only one for now)")->required()->check(CLI::IsMember({"bash"}));
+    // Unbound: bash, the one shell, is all it can be once CLI11 has checked it.
+    command->add_option("shell", "The shell: bash (the only one for now)")->required()->check(CLI::IsMember({"bash"}));
     command->footer("Use: source <(whitted completion bash), in a terminal or in ~/.bashrc.\n"
                     "Exit code: 0 script printed, 2 a bad option or the output cannot be written, 3 whitted itself failed.");
     const CLI::App* root = &app;

@@ -16,7 +16,7 @@
 int main(int argc, char** argv) {
     CLI::App app{"whitted: a Whitted-style recursive ray tracer for NFF and P3F scenes."};
     app.footer("Example: whitted render scenes/whitted_1980.p3f -o whitted_1980.png --stats\n"
-               "Exit code: 0 done, 1 the answer is no (diff: the images differ; grade: points lost), 2 cannot do what was given "
+               "Exit code: 0 done, 1 the answer is no (diff: the images differ), 2 cannot do what was given "
                "(a bad option, a bad or missing file, labs not done), 3 whitted itself failed.");
     app.set_version_flag("-V,--version", whitted::version_line(), "Print the version and the build, then exit");
     app.require_subcommand(1);
