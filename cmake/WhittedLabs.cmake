@@ -110,6 +110,6 @@ function(whitted_renderer target)
     set(A_COMMANDS whitted_no_instructor_commands)
   endif()
   add_executable(${target} $<TARGET_OBJECTS:whitted_app>)
-  target_link_libraries(${target} PRIVATE ${A_LABS} ${A_KERNELS} ${A_COMMANDS} whitted_trace whitted_framework
+  target_link_libraries(${target} PRIVATE ${A_LABS} ${A_KERNELS} ${A_COMMANDS} whitted_trace whitted_closest_name whitted_framework
                                           whitted_generators CLI11::CLI11)
 endfunction()

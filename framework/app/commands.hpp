@@ -29,6 +29,9 @@ Command add_generate_command(CLI::App& app);
 /// `whitted labs [--tsv]`
 Command add_labs_command(CLI::App& app);
 
+/// `whitted completion bash`
+Command add_completion_command(CLI::App& app);
+
 /// The instructor build's extra commands (`whitted grade`); none in the student's.
 std::vector<Command> add_instructor_commands(CLI::App& app);
 

@@ -1,5 +1,6 @@
 // `whitted diff A B`: compare two images with the grader's image gate.
 #include "commands.hpp"
+#include "exit_codes.hpp"
 #include "image_options.hpp"
 #include "whitted/image_compare.hpp"
 #include "whitted/image_pictures.hpp"
@@ -54,7 +55,7 @@ int run_diff(const DiffOptions& options) {
             const bool any_picture = !options.output.empty() || !options.amplified.empty();
             std::printf("the images have different sizes: %dx%d and %dx%d%s\n", reference.width, reference.height,
                         test.width, test.height, any_picture ? " (no difference image written)" : "");
-            return 1;
+            return exit_code::negative;
         }
         print_report(options, reference, test, difference);
         if (!options.output.empty()) {
@@ -67,10 +68,10 @@ int run_diff(const DiffOptions& options) {
             write_image(difference_picture(test, reference), options.amplified);
             std::printf("wrote %s: |image - reference|, 16 times brighter\n", options.amplified.c_str());
         }
-        return difference.passed ? 0 : 1;
+        return difference.passed ? exit_code::success : exit_code::negative;
     } catch (const ImageError& error) {
         std::fprintf(stderr, "%s\n", error.what());
-        return 2;
+        return exit_code::bad_input;
     }
 }
 
@@ -79,8 +80,9 @@ int run_diff(const DiffOptions& options) {
 Command add_diff_command(CLI::App& app) {
     auto options = std::make_shared<DiffOptions>();
     CLI::App* command = app.add_subcommand(
-        "diff", "Compare two images with the image gate of the tests and the grader; exit 0 when they match, 1 "
-                "when they differ, 2 when one cannot be read or the difference cannot be written.");
+        "diff", "Compare two images with the image gate of the tests and the grader.");
+    command->footer("Exit code: 0 the images match, 1 they differ (in size or in the gate's numbers), 2 an image "
+                    "cannot be read or written (or a bad option), 3 whitted itself failed.");
     command->add_option("reference", options->reference, "The expected image (.png, .ppm or .pfm)")->required();
     command->add_option("image", options->test, "The image to check")->required();
     command->add_option("-o,--output", options->output,

@@ -4,6 +4,7 @@
 // Why a command: students and `make bench` get scenes of any size without
 // downloading SPD, and the output is an ordinary scene file to render or read.
 #include "commands.hpp"
+#include "exit_codes.hpp"
 #include "whitted/generators.hpp"
 
 #include <cstdio>
@@ -30,21 +31,21 @@ int run_generate(const GenerateOptions& options) {
     const std::string error = generator_level_error(std::string(generator.name), level, generator.min_level, generator.max_level);
     if (!error.empty()) {
         std::fprintf(stderr, "whitted generate: %s\n", error.c_str());
-        return 2;
+        return exit_code::bad_input;
     }
     if (options.output.empty()) {
         generator.write(level, std::cout);
         std::cout.flush();
-        return std::cout ? 0 : 1;
+        return std::cout ? exit_code::success : exit_code::bad_input;
     }
     std::ofstream file(options.output, std::ios::binary);
     if (file) generator.write(level, file);
     file.close();
     if (!file) {
         std::fprintf(stderr, "whitted generate: cannot write %s\n", options.output.c_str());
-        return 1;
+        return exit_code::bad_input;
     }
-    return 0;
+    return exit_code::success;
 }
 
 } // namespace
@@ -65,7 +66,9 @@ Command add_generate_command(CLI::App& app) {
         ->check(CLI::IsMember(names));
     command->add_option("--level", options->level, "Recursion level (" + levels + ")");
     command->add_option("-o,--output", options->output, "Scene file to write: .nff for sphereflake and tetra, .p3f for torus (default: standard output)");
-    command->footer("Example: whitted generate sphereflake --level 4 -o flake4.nff");
+    command->footer("Example: whitted generate sphereflake --level 4 -o flake4.nff\n"
+                    "Exit code: 0 scene written, 2 a bad kind, level or option, or the file cannot be written, "
+                    "3 whitted itself failed.");
     return Command{command, [options] { return run_generate(*options); }};
 }
 

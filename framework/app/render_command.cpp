@@ -1,5 +1,6 @@
 // `whitted render`: render an NFF or P3F scene to an image.
 #include "commands.hpp"
+#include "exit_codes.hpp"
 #include "progress.hpp"
 #include "image_options.hpp"
 #include "stage_choice.hpp"
@@ -96,12 +97,12 @@ int run_render(const RenderOptions& options) {
     auto [width, height] = output_size(loaded.data.camera, options.width, options.height);
     if (const std::string problem = check_output_size(width, height); !problem.empty()) {
         std::fprintf(stderr, "whitted: %s\n", problem.c_str());
-        return 2;
+        return exit_code::bad_input;
     }
     loaded.data.camera = loaded.data.camera.with_resolution(width, height);
     // Scene errors come first: they are the user's to fix whatever the labs' state.
     const std::optional<int> stage = choose_stage(options.stage, options.pass);
-    if (!stage) return 1;
+    if (!stage) return exit_code::bad_input; // labs not done yet
     RenderSettings settings;
     settings.stage = *stage;
     settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);
@@ -164,7 +165,7 @@ int run_render(const RenderOptions& options) {
         StatsRecord record{options.scene, width, height, settings, result, parse_seconds, build_seconds, scene};
         if (!write_stats_json(record, options.stats_json)) {
             std::fprintf(stderr, "whitted: cannot write %s\n", options.stats_json.c_str());
-            return 1;
+            return exit_code::bad_input;
         }
     }
     if (result.stats.pixels_cut_short > 0) {
@@ -175,9 +176,9 @@ int run_render(const RenderOptions& options) {
     }
     if (broken > 0) {
         std::fprintf(stderr, "error: %zu pixels were NaN or infinite; they are magenta in %s\n", broken, output.c_str());
-        return 1;
+        return exit_code::bad_input; // the labs' code gave them
     }
-    return 0;
+    return exit_code::success;
 }
 
 
@@ -244,6 +245,9 @@ Command add_render_command(CLI::App& app) {
     render_command->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary line");
     render_command->add_flag("--srgb", options->srgb, "Write sRGB-encoded 8-bit values (default: linear, as in the course)")
         ->excludes(pass_option); // a pass's values are meant to be read as they are
+    render_command->footer("Exit code: 0 image written, 2 cannot render what was given (a bad option, a missing or "
+                           "malformed scene file, an image that cannot be written, labs not done yet or giving NaN "
+                           "pixels), 3 whitted itself failed.");
 
     return Command{render_command, [options] { return run_render(*options); }};
 }

@@ -1,8 +1,9 @@
 // `whitted grade SUBMISSION`: build a student's labs into workers, run every
 // test as the instructor's checker talking to the student's worker, and grade
-// them with the rubric; writes results.json (Gradescope) and report.html. Exit codes: 0 full marks, 1 points lost, 2 usage error,
-// 3 grader failure (the instructor tree does not build, the rubric is wrong).
+// them with the rubric; writes results.json (Gradescope) and report.html. Exit codes (framework/app/exit_codes.hpp):
+// 0 full marks, 1 points lost, 2 usage error, 3 grader failure (the instructor tree does not build, the rubric is wrong).
 #include "commands.hpp"
+#include "exit_codes.hpp"
 #include "grader/builder.hpp"
 #include "grader/grading.hpp"
 #include "grader/html_report.hpp"
@@ -147,7 +148,7 @@ int run_grade(const GradeOptions& options) {
         write_file(setup.out / "report.html", html_report(result, problem));
         std::fprintf(stderr, "whitted grade: %s\n", problem.message.c_str());
         std::printf("wrote %s and %s\n", (setup.out / "results.json").c_str(), (setup.out / "report.html").c_str());
-        return 2;
+        return exit_code::bad_input;
     }
     try {
         std::vector<std::string> known = labs;
@@ -155,10 +156,10 @@ int run_grade(const GradeOptions& options) {
         setup.rubric = load_rubric(options.rubric.empty() ? setup.instructor_tree / "instructor" / "rubric.json" : fs::path(options.rubric), known);
         setup.work = make_work_folder();
         result = grade_submission(setup);
-        code = result.max_cents > 0 && result.score_cents == result.max_cents ? 0 : 1;
+        code = result.max_cents > 0 && result.score_cents == result.max_cents ? exit_code::success : exit_code::negative;
     } catch (const std::exception& error) { // RubricError, GraderFailure, file system errors
         problem = {GradingProblem::Kind::grader, replace_paths(error.what(), shown_paths(setup))};
-        code = 3;
+        code = exit_code::tool_failure;
     }
     if (!setup.work.empty()) {
         std::error_code ignored;
@@ -179,7 +180,8 @@ int run_grade(const GradeOptions& options) {
 Command add_grade_command(CLI::App& app) {
     auto options = std::make_shared<GradeOptions>();
     CLI::App* command = app.add_subcommand("grade", "Grade a student's labs against the instructor tree (instructors).");
-    command->footer("Exit code: 0 full marks, 1 points lost, 2 usage error, 3 grader failure.");
+    command->footer("Exit code: 0 full marks, 1 points lost, 2 usage error (a bad option, a submission or output folder "
+                    "that cannot be used, lab files in two places), 3 grader failure (whitted itself failed).");
     command->add_option("submission", options->submission,
                         "The student's submission: the lab files (NN_*.cpp) at its top, in its labs/, or one folder down "
                         "(my-project/ or my-project/labs/)")
@@ -221,7 +223,13 @@ Command add_grade_command(CLI::App& app) {
                            return run_grade(*options);
                        } catch (const UsageError& error) {
                            std::fprintf(stderr, "whitted grade: %s\n", error.what());
-                           return 2;
+                           return exit_code::bad_input;
+                       } catch (const fs::filesystem_error& error) { // the submission or --out folder, before grading
+                           std::fprintf(stderr, "whitted grade: %s\n", error.what());
+                           return exit_code::bad_input;
+                       } catch (const GraderFailure& error) {
+                           std::fprintf(stderr, "whitted grade: grader failure: %s\n", error.what());
+                           return exit_code::tool_failure;
                        }
                    }};
 }

@@ -1,5 +1,6 @@
 // `whitted trace SCENE --pixel X Y`: the ray tree of one pixel.
 #include "commands.hpp"
+#include "exit_codes.hpp"
 #include "image_options.hpp"
 #include "stage_choice.hpp"
 #include "trace/ray_tree_report.hpp"
@@ -43,7 +44,7 @@ int run_trace(const TraceOptions& options) {
     const auto [width, height] = output_size(loaded.data.camera, options.width, options.height);
     if (const std::string problem = check_output_size(width, height); !problem.empty()) {
         std::fprintf(stderr, "whitted: %s\n", problem.c_str());
-        return 2;
+        return exit_code::bad_input;
     }
     const int x = options.pixel[0], y = options.pixel[1];
     if (x < 0 || y < 0 || x >= width || y >= height) {
@@ -51,11 +52,11 @@ int run_trace(const TraceOptions& options) {
                      "whitted: pixel (%d, %d) is outside the %dx%d image; columns go from 0 to %d (left to right), "
                      "rows from 0 to %d (top to bottom)\n",
                      x, y, width, height, width - 1, height - 1);
-        return 2;
+        return exit_code::bad_input;
     }
     loaded.data.camera = loaded.data.camera.with_resolution(width, height);
     const std::optional<int> stage = choose_stage(options.stage);
-    if (!stage) return 1;
+    if (!stage) return exit_code::bad_input; // labs not done yet
     RenderSettings settings;
     settings.stage = *stage;
     settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);
@@ -73,12 +74,12 @@ int run_trace(const TraceOptions& options) {
 
     const TraceContext context{scene, settings, options.scene, x, y, width, height};
     if (options.json == "-") {
-        if (!write_json(ray_tree_json(tree, context), "-")) return 1;
+        if (!write_json(ray_tree_json(tree, context), "-")) return exit_code::bad_input;
     } else {
         std::fputs(ray_tree_text(tree, context).c_str(), stdout);
         if (!options.json.empty() && !write_json(ray_tree_json(tree, context), options.json)) {
             std::fprintf(stderr, "whitted: cannot write %s\n", options.json.c_str());
-            return 1;
+            return exit_code::bad_input;
         }
     }
     if (side_data) {
@@ -103,7 +104,7 @@ int run_trace(const TraceOptions& options) {
                         "is blocked).\n",
                         options.picture.c_str());
     }
-    return 0;
+    return exit_code::success;
 }
 
 } // namespace
@@ -135,6 +136,8 @@ Command add_trace_command(CLI::App& app) {
         ->type_name("IMAGE")
         ->check(CLI::Validator(check_output_path, "IMAGE"));
     command->add_option("--threads", options->threads, "Threads for the picture's renders; 0 = one per core")->check(CLI::Range(0, 1024));
+    command->footer("Exit code: 0 tree printed, 2 cannot trace what was given (a bad option, a missing or malformed "
+                    "scene file, a file that cannot be written, labs not done yet), 3 whitted itself failed.");
     return Command{command, [options] { return run_trace(*options); }};
 }
 
