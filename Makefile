@@ -26,8 +26,8 @@ MINUTES ?= 10
 # make gradescope: the zip and the choices it carries (instructor/scripts/make-autograder.sh).
 ZIP ?= autograder.zip
 HIDDEN_VISIBILITY ?= hidden
-TEST_TIMEOUT ?= 10
-BUDGET ?= 480
+TEST_TIMEOUT ?= 20
+BUDGET ?= 600
 
 # The tree's build mode (cmake/WhittedMode.cmake): instructor (solution/ and
 # instructor/ are here) or handout (the student's tree).

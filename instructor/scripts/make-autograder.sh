@@ -7,7 +7,7 @@
 #                      [--timeout SECONDS_PER_TEST] [--budget SECONDS_PER_SUBMISSION]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-out=autograder.zip visibility=hidden timeout=10 budget=480
+out=autograder.zip visibility=hidden timeout=20 budget=600
 usage() { echo "usage: make-autograder.sh [--out FILE.zip] [--hidden-visibility hidden|after_due_date|after_published|visible] [--timeout S] [--budget S]" >&2; exit 2; }
 while [ $# -gt 0 ]; do
     [ $# -ge 2 ] || usage
