@@ -4,8 +4,10 @@
 // 3 grader failure (the instructor tree does not build, the rubric is wrong).
 #include "commands.hpp"
 #include "grader/builder.hpp"
+#include "grader/grade_all_command.hpp"
 #include "grader/grading.hpp"
 #include "grader/html_report.hpp"
+#include "grader/output_marker.hpp"
 #include "grader/results_json.hpp"
 #include "grader/submission.hpp"
 #include "grader/text.hpp"
@@ -38,8 +40,6 @@ struct GradeOptions {
     std::string sandbox = "auto";
     bool quiet = false;
 };
-
-const char* kMarker = ".whitted-grade"; // marks a folder the grader may empty again
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -97,11 +97,11 @@ int run_grade(const GradeOptions& options) {
     setup.submission_labs = find_lab_folder(submission, labs);
     setup.out = fs::weakly_canonical(fs::absolute(options.out));
     setup.instructor_build = fs::weakly_canonical(fs::absolute(options.instructor_build));
-    check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs, setup.instructor_tree, setup.instructor_build});
+    check_folder(setup.out, kGradeOutputMarker, "--out", {submission, setup.submission_labs, setup.instructor_tree, setup.instructor_build});
     fs::create_directories(setup.out);
     // The grader's user alone: the copied labs and the report of an earlier grading (of the solution, say) are answers.
     fs::permissions(setup.out, fs::perms::owner_all);
-    write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/ and tests/ here\n");
+    write_file(setup.out / kGradeOutputMarker, kGradeOutputMarkerText);
     fs::remove_all(setup.out / "build"); // left by graders before the checker/worker split
     // An earlier grading's results must never pass for this one's, whatever happens below.
     fs::remove(setup.out / "results.json");
@@ -202,6 +202,6 @@ Command add_grade_command(CLI::App& app) {
 
 } // namespace
 
-std::vector<Command> add_instructor_commands(CLI::App& app) { return {add_grade_command(app)}; }
+std::vector<Command> add_instructor_commands(CLI::App& app) { return {add_grade_command(app), add_grade_all_command(app)}; }
 
 } // namespace whitted
