@@ -10,6 +10,7 @@
 #include <fstream>
 #include <spawn.h>
 #include <stdexcept>
+#include <string_view>
 #include <sys/wait.h>
 
 extern char** environ;
@@ -55,12 +56,19 @@ void prepare_grading_folder(const fs::path& out) {
     fs::remove(out / "results.json");
 }
 
-pid_t start_grading(const fs::path& program, const fs::path& submission, const fs::path& out, const std::vector<std::string>& options) {
+pid_t start_grading(const fs::path& program, const fs::path& submission, const fs::path& out, const std::vector<std::string>& options,
+                    const fs::path& temporary) {
     std::vector<std::string> args = {program.string(), "grade", submission.string(), "--out", out.string(), "-q"};
     args.insert(args.end(), options.begin(), options.end());
     std::vector<char*> argv;
     for (std::string& arg : args) argv.push_back(arg.data());
     argv.push_back(nullptr);
+    std::vector<std::string> variables = {"TMPDIR=" + temporary.string()};
+    for (char** variable = environ; *variable; ++variable)
+        if (std::string_view(*variable).rfind("TMPDIR=", 0) != 0) variables.emplace_back(*variable);
+    std::vector<char*> environment;
+    for (std::string& variable : variables) environment.push_back(variable.data());
+    environment.push_back(nullptr);
     const std::string log = (out / "grade.log").string();
 
     posix_spawn_file_actions_t files;
@@ -83,7 +91,7 @@ pid_t start_grading(const fs::path& program, const fs::path& submission, const f
     posix_spawnattr_setsigmask(&attributes, &none);
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
     pid_t pid = -1;
-    const int error = posix_spawn(&pid, program.c_str(), &files, &attributes, argv.data(), environ);
+    const int error = posix_spawn(&pid, program.c_str(), &files, &attributes, argv.data(), environment.data());
     posix_spawn_file_actions_destroy(&files);
     posix_spawnattr_destroy(&attributes);
     if (error != 0) throw std::runtime_error("cannot start " + program.string() + ": " + std::strerror(error));

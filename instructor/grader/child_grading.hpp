@@ -22,10 +22,11 @@ namespace whitted::grade {
 void prepare_grading_folder(const std::filesystem::path& out);
 
 /// Starts `program grade SUBMISSION --out OUT -q OPTIONS...` in a process
-/// group of its own, stdin from /dev/null, stdout and stderr to OUT/grade.log.
+/// group of its own, stdin from /dev/null, stdout and stderr to OUT/grade.log,
+/// with TMPDIR set to `temporary` (where it stages its kit).
 /// Returns its process id; throws std::runtime_error when it cannot start.
 pid_t start_grading(const std::filesystem::path& program, const std::filesystem::path& submission, const std::filesystem::path& out,
-                    const std::vector<std::string>& options);
+                    const std::vector<std::string>& options, const std::filesystem::path& temporary);
 
 /// The student's grade from how the child ended (waitpid's status), OUT/results.json and OUT/grade.log.
 StudentGrade finished_grading(const std::string& student, int wait_status, const std::filesystem::path& out);

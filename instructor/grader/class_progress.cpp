@@ -32,6 +32,7 @@ ClassProgress::ClassProgress(std::FILE* stream, std::size_t total, int parallel,
 void ClassProgress::finished(const StudentGrade& grade, double seconds) {
     ++done_;
     busy_seconds_ += seconds;
+    last_finish_ = std::chrono::steady_clock::now();
     last_ = short_name(grade.student) + ": " + outcome(grade);
     if (quiet_) return;
     const std::string why = grade.status == GradeStatus::graded ? "" : ": " + grade.reason;
@@ -59,9 +60,11 @@ void ClassProgress::draw() {
     line += std::to_string(done_) + "/" + std::to_string(total_) + "] " + std::to_string(total_ ? done_ * 100 / total_ : 100) + "%";
     if (!last_.empty()) line += "  " + last_;
     line += "  elapsed " + format_duration(elapsed);
-    // The mean time of a grading, for the students left, `parallel` at a time.
-    if (done_ > 0 && done_ < total_)
-        line += "  ETA " + format_duration(busy_seconds_ / static_cast<double>(done_) * static_cast<double>(total_ - done_) / parallel_);
+    // The mean time of a grading, for the students left, `parallel` at a time, counted from the last to finish.
+    if (done_ > 0 && done_ < total_) {
+        const double left = busy_seconds_ / static_cast<double>(done_) * static_cast<double>(total_ - done_) / parallel_;
+        line += "  ETA " + format_duration(left - std::chrono::duration<double>(last_draw_ - last_finish_).count());
+    }
     std::fprintf(stream_, "\r%s\033[K", line.c_str());
     std::fflush(stream_);
 }

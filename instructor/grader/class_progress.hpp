@@ -40,6 +40,7 @@ class ClassProgress {
     bool quiet_;
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
     std::chrono::steady_clock::time_point last_draw_{};
+    std::chrono::steady_clock::time_point last_finish_{};
     std::size_t done_ = 0;
     double busy_seconds_ = 0; // the finished gradings' times summed
     std::string last_;        // "ana: 87.5/100"

@@ -12,7 +12,10 @@
 #              timeouts that say so, and results.json is still valid;
 #   grade-all  a class of three (the reference, the stubs, a compile error in
 #              lab 3, named with a comma and quotes): the CSV's header, rows,
-#              quoting, statuses and per-lab points.
+#              quoting, statuses and per-lab points;
+#   failing    grade-all with a rubric that does not parse and a student whose
+#              grading folder is someone else's: exit 3, every student listed
+#              as grader_failure or error, with the reason.
 # Every results.json must be valid Gradescope JSON; every report.html must be
 # self-contained, with pictures for every image test. Prints how long each
 # grading took; exits non-zero on any failure.
@@ -74,6 +77,7 @@ ok(any("time budget of 20 s ran out" in t["output"] for t in results["tests"]), 
 
 # (e) A class with grade-all: the reference (ana), the untouched stubs (ben) and the reference with a compile error
 # in lab 3 (a name with a comma and quotes), beside a file, a hidden folder and __MACOSX, which are no students.
+# One grading at a time: two at once took twice as long on 2 cores (instructor/docs/grading.md).
 class="$work/class"
 broken_student='cho, "broken"'
 mkdir -p "$class/ana" "$class/ben" "$class/$broken_student" "$class/.git" "$class/__MACOSX/ana"
@@ -84,7 +88,7 @@ python3 instructor/scripts/lib/inject.py "$class/$broken_student" 03_blinn_phong
 echo "not a student" > "$class/README.txt"
 start=$(date +%s.%N)
 status=0
-"$whitted" grade-all "$class" --csv "$work/class.csv" --out "$work/class-grades" --parallel "${CLASS_PARALLEL:-1}" --jobs "$jobs" \
+"$whitted" grade-all "$class" --csv "$work/class.csv" --out "$work/class-grades" --parallel 1 --jobs "$jobs" \
     "${fence_options[@]}" > "$work/class.log" 2>&1 || status=$?
 summary+=("$(printf '%-16s %6s s  exit %d' "grade-all (3)" "$(python3 -c "print(f'{$(date +%s.%N) - $start:.1f}')")" "$status")")
 if [ "$status" -ne 0 ] || ! python3 - "$work/class.csv" "$work/class-grades" solution <<'EOF'; then
@@ -119,6 +123,36 @@ EOF
     failures=$((failures + 1))
 else
     echo "ok   grade-all"
+fi
+
+# (f) grade-all when gradings fail: a rubric that does not parse (each grading a grader failure, exit 3), then again
+# into the same folder with a third student whose grading folder is someone else's (an error): the CSV lists them all.
+mkdir -p "$work/failing-class/a" "$work/failing-class/b"
+echo '{"labs": 3' > "$work/bad-rubric.json"
+status=0
+"$whitted" grade-all "$work/failing-class" --csv "$work/failing.csv" --out "$work/failing-grades" --rubric "$work/bad-rubric.json" \
+    -q > "$work/failing.log" 2>&1 || status=$?
+mkdir -p "$work/failing-class/zed" "$work/failing-grades/zed"
+echo "not the grader's" > "$work/failing-grades/zed/notes.txt"
+"$whitted" grade-all "$work/failing-class" --csv "$work/failing.csv" --out "$work/failing-grades" --rubric "$work/bad-rubric.json" \
+    -q >> "$work/failing.log" 2>&1 || status=$((status * 10 + $?))
+if [ "$status" -ne 33 ] || ! python3 - "$work/failing.csv" "$work/failing.log" <<'EOF'; then
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1], newline="")))
+log = open(sys.argv[2]).read()
+problems = []
+statuses = [(row[0], row[3]) for row in rows[1:]]
+if statuses != [("a", "grader_failure"), ("b", "grader_failure"), ("zed", "error")]: problems.append("statuses " + str(statuses))
+if "a: grader failure: " not in log or "bad-rubric.json:2:" not in log: problems.append("the summary does not give a's reason")
+if "zed: error: " not in log or "is not a grading's folder" not in log: problems.append("the summary does not give zed's reason")
+for problem in problems: print("  " + problem)
+sys.exit(1 if problems else 0)
+EOF
+    echo "FAIL grade-all with failing gradings: exit codes $status, expected 3 and 3 (33); see above"
+    cat "$work/failing.log"
+    failures=$((failures + 1))
+else
+    echo "ok   grade-all with failing gradings"
 fi
 
 echo
