@@ -6,6 +6,7 @@
 #include "grader/child_grading.hpp"
 #include "grader/class_grades.hpp"
 #include "grader/class_progress.hpp"
+#include "grader/path_inside.hpp"
 #include "grader/submission.hpp"
 #include "process/process_runner.hpp"
 
@@ -51,11 +52,6 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-bool inside(const fs::path& path, const fs::path& folder) {
-    const auto [end, ignored] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
-    return end == folder.end();
-}
-
 // The class: FOLDER's subfolders (the students), sorted; hidden folders and
 // __MACOSX skipped, files and links noted.
 std::vector<std::string> list_students(const fs::path& folder, bool quiet) {
@@ -83,7 +79,7 @@ std::vector<std::string> list_students(const fs::path& folder, bool quiet) {
 
 // GRADES_DIR must be new, empty or grade-all's (it has the marker), and apart from the class.
 void prepare_grades_folder(const fs::path& out, const fs::path& folder) {
-    if (inside(out, folder) || inside(folder, out))
+    if (path_inside(out, folder) || path_inside(folder, out))
         throw UsageError("--out " + out.string() + " and " + folder.string() + " must not be inside one another");
     if (fs::exists(out) && (!fs::is_directory(out) || (!fs::is_empty(out) && !fs::exists(out / kClassMarker))))
         throw UsageError(out.string() + " exists and is not grade-all's; choose a new or empty --out");

@@ -8,6 +8,7 @@
 #include "grader/grading.hpp"
 #include "grader/html_report.hpp"
 #include "grader/output_marker.hpp"
+#include "grader/path_inside.hpp"
 #include "grader/results_json.hpp"
 #include "grader/submission.hpp"
 #include "grader/text.hpp"
@@ -45,16 +46,11 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-bool inside(const fs::path& path, const fs::path& folder) {
-    const auto [end, ignored] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
-    return end == folder.end();
-}
-
 // A folder the grader writes must be new, empty or written by it before
 // (it has `mark`), and hold nothing the grader reads.
 void check_folder(const fs::path& folder, const char* mark, const std::string& option, const std::vector<fs::path>& precious) {
     for (const fs::path& path : precious)
-        if (inside(path, folder)) throw UsageError(folder.string() + " holds " + path.string() + "; choose another " + option);
+        if (path_inside(path, folder)) throw UsageError(folder.string() + " holds " + path.string() + "; choose another " + option);
     if (fs::exists(folder) && (!fs::is_directory(folder) || (!fs::is_empty(folder) && !fs::exists(folder / mark))))
         throw UsageError(folder.string() + " exists and is not the grader's; choose a new or empty " + option);
 }
