@@ -5,8 +5,11 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "grader/builder.hpp"
+#include "grader/grade_all_command.hpp"
 #include "grader/grading.hpp"
 #include "grader/html_report.hpp"
+#include "grader/output_marker.hpp"
+#include "grader/path_inside.hpp"
 #include "grader/results_json.hpp"
 #include "grader/submission.hpp"
 #include "grader/text.hpp"
@@ -42,22 +45,15 @@ struct GradeOptions {
     bool quiet = false;
 };
 
-const char* kMarker = ".whitted-grade"; // marks a folder the grader may empty again
-
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
-
-bool inside(const fs::path& path, const fs::path& folder) {
-    const auto [end, ignored] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
-    return end == folder.end();
-}
 
 // A folder the grader writes must be new, empty or written by it before
 // (it has `mark`), and hold nothing the grader reads.
 void check_folder(const fs::path& folder, const char* mark, const std::string& option, const std::vector<fs::path>& precious) {
     for (const fs::path& path : precious)
-        if (inside(path, folder)) throw UsageError(folder.string() + " holds " + path.string() + "; choose another " + option);
+        if (path_inside(path, folder)) throw UsageError(folder.string() + " holds " + path.string() + "; choose another " + option);
     if (fs::exists(folder) && (!fs::is_directory(folder) || (!fs::is_empty(folder) && !fs::exists(folder / mark))))
         throw UsageError(folder.string() + " exists and is not the grader's; choose a new or empty " + option);
 }
@@ -111,11 +107,11 @@ int run_grade(const GradeOptions& options) {
     }
     setup.out = fs::weakly_canonical(fs::absolute(options.out));
     setup.instructor_build = fs::weakly_canonical(fs::absolute(options.instructor_build));
-    check_folder(setup.out, kMarker, "--out", {submission, setup.submission_labs.folder, setup.instructor_tree, setup.instructor_build});
+    check_folder(setup.out, kGradeOutputMarker, "--out", {submission, setup.submission_labs.folder, setup.instructor_tree, setup.instructor_build});
     fs::create_directories(setup.out);
     // The grader's user alone: the copied labs and the report of an earlier grading (of the solution, say) are answers.
     fs::permissions(setup.out, fs::perms::owner_all);
-    write_file(setup.out / kMarker, "whitted grade output; the grader empties labs/ and tests/ here\n");
+    write_file(setup.out / kGradeOutputMarker, kGradeOutputMarkerText);
     fs::remove_all(setup.out / "build"); // left by graders before the checker/worker split
     // An earlier grading's results must never pass for this one's, whatever happens below.
     fs::remove(setup.out / "results.json");
@@ -236,6 +232,6 @@ Command add_grade_command(CLI::App& app) {
 
 } // namespace
 
-std::vector<Command> add_instructor_commands(CLI::App& app) { return {add_grade_command(app)}; }
+std::vector<Command> add_instructor_commands(CLI::App& app) { return {add_grade_command(app), add_grade_all_command(app)}; }
 
 } // namespace whitted

@@ -9,7 +9,13 @@
 #              other labs full marks, integration is skipped;
 #   budget     the reference with an endless loop in lab 2, --timeout 4 and
 #              --budget 20: lab 1 passes, the tests not started in time are
-#              timeouts that say so, and results.json is still valid.
+#              timeouts that say so, and results.json is still valid;
+#   grade-all  a class of three (the reference, the stubs, a compile error in
+#              lab 3, named with a comma and quotes): the CSV's header, rows,
+#              quoting, statuses and per-lab points;
+#   failing    grade-all with a rubric that does not parse and a student whose
+#              grading folder is someone else's: exit 3, every student listed
+#              as grader_failure or error, with the reason.
 # Every results.json must be valid Gradescope JSON; every report.html must be
 # self-contained, with pictures for every image test. Prints how long each
 # grading took; exits non-zero on any failure.
@@ -68,6 +74,86 @@ grade budget "$work/budget-labs" 1 --timeout 4 --budget 20
 check budget 'ok(lab_score("01_ray_casting") == lab_max("01_ray_casting"), "01_ray_casting: " + str(lab_score("01_ray_casting")))
 ok(0 < results["score"] < 100, "score " + str(results["score"]) + " with a budget of 20 s")
 ok(any("time budget of 20 s ran out" in t["output"] for t in results["tests"]), "no test says the budget ran out")'
+
+# (e) A class with grade-all: the reference (ana), the untouched stubs (ben) and the reference with a compile error
+# in lab 3 (a name with a comma and quotes), beside a file, a hidden folder and __MACOSX, which are no students.
+# One grading at a time: two at once took twice as long on 2 cores (instructor/docs/grading.md).
+class="$work/class"
+broken_student='cho, "broken"'
+mkdir -p "$class/ana" "$class/ben" "$class/$broken_student" "$class/.git" "$class/__MACOSX/ana"
+cp -r solution "$class/ana/labs"
+cp -r labs "$class/ben/labs"
+cp solution/*.cpp "$class/$broken_student/"
+python3 instructor/scripts/lib/inject.py "$class/$broken_student" 03_blinn_phong blinn_phong 'int oops = undeclared_variable;'
+echo "not a student" > "$class/README.txt"
+start=$(date +%s.%N)
+status=0
+"$whitted" grade-all "$class" --csv "$work/class.csv" --out "$work/class-grades" --parallel 1 --jobs "$jobs" \
+    "${fence_options[@]}" > "$work/class.log" 2>&1 || status=$?
+summary+=("$(printf '%-16s %6s s  exit %d' "grade-all (3)" "$(python3 -c "print(f'{$(date +%s.%N) - $start:.1f}')")" "$status")")
+if [ "$status" -ne 0 ] || ! python3 - "$work/class.csv" "$work/class-grades" solution <<'EOF'; then
+import csv, os, sys
+path, grades, solution = sys.argv[1:]
+problems = []
+def ok(condition, text):
+    if not condition: problems.append(text)
+raw = open(path, "rb").read().decode()
+rows = list(csv.reader(raw.splitlines()))
+labs = sorted(name[:-4] for name in os.listdir(solution) if name.endswith(".cpp")) + ["integration"]
+ok(rows[0] == ["student", "score", "max_score", "status"] + labs, "header " + ",".join(rows[0]))
+ok([row[0] for row in rows[1:]] == ["ana", "ben", 'cho, "broken"'], "students " + str([row[0] for row in rows[1:]]))
+ok('\n"cho, ""broken""",' in raw, "the name with a comma and quotes is not quoted as RFC 4180 says")
+by_name = {row[0]: row for row in rows[1:]}
+for name, row in by_name.items():
+    ok(len(row) == len(rows[0]), name + ": " + str(len(row)) + " fields")
+    ok(row[3] == "graded", name + ": status " + row[3])
+    ok(float(row[2]) == 100, name + ": max_score " + row[2])
+    ok(abs(sum(float(points) for points in row[4:]) - float(row[1])) < 0.005, name + ": the labs do not sum to the score " + row[1])
+    ok(os.path.getsize(os.path.join(grades, name, "grade.log")) > 0, name + ": no grade.log")
+ok(float(by_name["ana"][1]) == 100, "ana (the reference): " + by_name["ana"][1])
+ok(float(by_name["ben"][1]) == 0, "ben (the stubs): " + by_name["ben"][1])
+broken = by_name['cho, "broken"']
+ok(0 < float(broken[1]) < 100, "cho (a compile error): " + broken[1])
+ok(float(broken[4 + labs.index("03_blinn_phong")]) == 0, "cho: points for lab 3, which does not compile")
+for problem in problems: print("  " + problem)
+sys.exit(1 if problems else 0)
+EOF
+    echo "FAIL grade-all: exit code $status, expected 0; see above"
+    cat "$work/class.log"
+    failures=$((failures + 1))
+else
+    echo "ok   grade-all"
+fi
+
+# (f) grade-all when gradings fail: a rubric that does not parse (each grading a grader failure, exit 3), then again
+# into the same folder with a third student whose grading folder is someone else's (an error): the CSV lists them all.
+mkdir -p "$work/failing-class/a" "$work/failing-class/b"
+echo '{"labs": 3' > "$work/bad-rubric.json"
+status=0
+"$whitted" grade-all "$work/failing-class" --csv "$work/failing.csv" --out "$work/failing-grades" --rubric "$work/bad-rubric.json" \
+    -q > "$work/failing.log" 2>&1 || status=$?
+mkdir -p "$work/failing-class/zed" "$work/failing-grades/zed"
+echo "not the grader's" > "$work/failing-grades/zed/notes.txt"
+"$whitted" grade-all "$work/failing-class" --csv "$work/failing.csv" --out "$work/failing-grades" --rubric "$work/bad-rubric.json" \
+    -q >> "$work/failing.log" 2>&1 || status=$((status * 10 + $?))
+if [ "$status" -ne 33 ] || ! python3 - "$work/failing.csv" "$work/failing.log" <<'EOF'; then
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1], newline="")))
+log = open(sys.argv[2]).read()
+problems = []
+statuses = [(row[0], row[3]) for row in rows[1:]]
+if statuses != [("a", "grader_failure"), ("b", "grader_failure"), ("zed", "error")]: problems.append("statuses " + str(statuses))
+if "a: grader failure: " not in log or "bad-rubric.json:2:" not in log: problems.append("the summary does not give a's reason")
+if "zed: error: " not in log or "is not a grading's folder" not in log: problems.append("the summary does not give zed's reason")
+for problem in problems: print("  " + problem)
+sys.exit(1 if problems else 0)
+EOF
+    echo "FAIL grade-all with failing gradings: exit codes $status, expected 3 and 3 (33); see above"
+    cat "$work/failing.log"
+    failures=$((failures + 1))
+else
+    echo "ok   grade-all with failing gradings"
+fi
 
 echo
 echo "grading times (2 jobs):"
