@@ -185,8 +185,9 @@ def build(handout, cache):
         raise Invalid(f"the build step failed (exit {status}); its log: {log}")
     compiled = re.findall(r"Building CXX object (\S+)", text)
     hits = re.search(r"^\s*Hits:\s+(\d+)\s*/\s*(\d+)", text, re.M)
+    cached = sum(f.stat().st_size for f in (cache / "ccache").rglob("*") if f.is_file()) if (cache / "ccache").is_dir() else 0
     print(f"build step: {seconds:.0f} s, {len(compiled)} files compiled"
-          + (f", ccache hits {hits.group(1)}/{hits.group(2)}" if hits else ""))
+          + (f", ccache hits {hits.group(1)}/{hits.group(2)}, the cache {cached / 2**20:.0f} MiB" if hits else ""))
     return seconds, compiled, text
 
 
