@@ -82,7 +82,7 @@ def graded_yaml(steps):
             "        with:",
             f"          test-name: {q(name)}",
             f"          command: {q(f'bash scripts/classroom-check.sh {args}')}",
-            "          timeout: 5",
+            "          timeout: 10",  # minutes: a build the build step left unfinished, then tests of a few seconds
             f"          max-score: {points}",
         ]
     lines += [
