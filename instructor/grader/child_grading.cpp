@@ -103,7 +103,7 @@ StudentGrade finished_grading(const std::string& student, int wait_status, const
     grade.student = student;
     const bool exited = WIFEXITED(wait_status);
     const int code = exited ? WEXITSTATUS(wait_status) : -1;
-    if (!exited || (code != 0 && code != 1 && code != 3)) {
+    if (!exited || code < 0 || code > 3) {
         grade.reason = ending(wait_status) + ": " + log_reason(out / "grade.log");
         return grade;
     }
@@ -113,7 +113,8 @@ StudentGrade finished_grading(const std::string& student, int wait_status, const
         grade.reason = ending(wait_status) + ", but " + error.what();
         return grade;
     }
-    grade.status = code == 3 ? GradeStatus::grader_failure : GradeStatus::graded;
+    grade.status = code == 3 ? GradeStatus::grader_failure : code == 2 ? GradeStatus::not_graded : GradeStatus::graded;
+    if (code == 2) grade.reason = log_reason(out / "grade.log");
     if (code == 3) {
         grade.reason = log_reason(out / "grade.log");
         if (grade.reason.rfind("grader failure: ", 0) == 0) grade.reason.erase(0, 16);

@@ -27,6 +27,7 @@ std::string rounded_points(double cents) { return compact_points(std::lround(cen
 const char* grade_status_name(GradeStatus status) {
     switch (status) {
     case GradeStatus::graded: return "graded";
+    case GradeStatus::not_graded: return "not_graded";
     case GradeStatus::grader_failure: return "grader_failure";
     case GradeStatus::error: break;
     }
@@ -127,7 +128,9 @@ std::string class_summary(std::vector<StudentGrade> grades) {
     for (const StudentGrade& grade : grades) {
         if (grade.status == GradeStatus::graded) continue;
         ++failed;
-        failures += "  " + grade.student + ": " + (grade.status == GradeStatus::grader_failure ? "grader failure: " : "error: ") +
+        failures += "  " + grade.student + ": " + (grade.status == GradeStatus::grader_failure ? "grader failure: "
+                                                  : grade.status == GradeStatus::not_graded ? "not graded: "
+                                                                                           : "error: ") +
                     grade.reason + "\n";
     }
     if (failed) text += "not graded (" + std::to_string(failed) + "):\n" + failures;

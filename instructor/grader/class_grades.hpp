@@ -15,11 +15,13 @@
 namespace whitted::grade {
 
 /// How a student's grading ended: `graded` (grade exited 0 or 1 with a
-/// results.json), `grader_failure` (exit 3, with a results.json), `error`
-/// (anything else: no or an unreadable results.json, killed, another exit code).
-enum class GradeStatus { graded, grader_failure, error };
+/// results.json), `not_graded` (exit 2 with a results.json: the submission
+/// cannot be graded as it is, e.g. lab files in two places; the student is told
+/// why), `grader_failure` (exit 3, with a results.json), `error` (anything
+/// else: no or an unreadable results.json, killed, another exit code).
+enum class GradeStatus { graded, not_graded, grader_failure, error };
 
-/// "graded", "grader_failure" or "error", as the CSV says it.
+/// "graded", "not_graded", "grader_failure" or "error", as the CSV says it.
 const char* grade_status_name(GradeStatus status);
 
 /// The points of one results.json, in hundredths.
@@ -38,7 +40,7 @@ struct StudentGrade {
     std::string student;                 // the submission's folder name
     GradeStatus status = GradeStatus::error;
     std::optional<ResultsPoints> points; // when results.json was read
-    std::string reason;                  // for grader_failure and error: the first line of why
+    std::string reason;                  // unless graded: the first line of why
 };
 
 /// Points without trailing zeros: 10000 -> "100", 8750 -> "87.5", 1234 -> "12.34".

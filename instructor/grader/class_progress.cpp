@@ -12,7 +12,7 @@ std::string short_name(const std::string& name) { return name.size() <= 24 ? nam
 std::string outcome(const StudentGrade& grade) {
     if (grade.status == GradeStatus::graded && grade.points)
         return compact_points(grade.points->score_cents) + "/" + compact_points(grade.points->max_cents);
-    return grade.status == GradeStatus::grader_failure ? "grader failure" : "error";
+    return grade.status == GradeStatus::grader_failure ? "grader failure" : grade.status == GradeStatus::not_graded ? "not graded" : "error";
 }
 
 } // namespace

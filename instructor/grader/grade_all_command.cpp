@@ -184,7 +184,10 @@ int run_grade_all(const GradeAllOptions& options) {
     write_atomically(csv, class_csv(grades, columns));
     std::printf("%swrote %s; each student's grading is in %s/<student>/ (grade.log, results.json, report.html)\n",
                 class_summary(grades).c_str(), csv.c_str(), out.c_str());
-    const bool all_graded = std::all_of(grades.begin(), grades.end(), [](const StudentGrade& g) { return g.status == GradeStatus::graded; });
+    // A submission the student must fix (not_graded) is theirs to fix, not a failure of the grading.
+    const bool all_graded = std::all_of(grades.begin(), grades.end(), [](const StudentGrade& g) {
+        return g.status == GradeStatus::graded || g.status == GradeStatus::not_graded;
+    });
     return all_graded ? 0 : 3;
 }
 

@@ -40,6 +40,9 @@ PRESETS
 sed -i 's/^set(WHITTED_DEFAULT_MODE instructor)$/set(WHITTED_DEFAULT_MODE handout)/' "$out/cmake/WhittedMode.cmake"
 grep -q '^set(WHITTED_DEFAULT_MODE handout)$' "$out/cmake/WhittedMode.cmake" ||
     { echo "export-handout: could not set the handout's build mode in cmake/WhittedMode.cmake" >&2; exit 1; }
+# The GitHub Classroom workflow (the handout as a template repository): one graded step per
+# public rule of the rubric, for every lab of the lab table (instructor/scripts/classroom-workflow.py).
+python3 instructor/scripts/classroom-workflow.py . "$out/.github/workflows/classroom.yml"
 # The Makefile's header lists instructor commands and documents; the student's lists what the handout has.
 { cat instructor/docs/handout/makefile-header.txt; sed '1,/^[^#]/{/^#/d}' Makefile; } > "$out/Makefile"
 echo "handout written to $out ($(find "$out" -type f | wc -l) files)"

@@ -76,7 +76,8 @@ ok(0 < results["score"] < 100, "score " + str(results["score"]) + " with a budge
 ok(any("time budget of 20 s ran out" in t["output"] for t in results["tests"]), "no test says the budget ran out")'
 
 # (e) A class with grade-all: the reference (ana), the untouched stubs (ben) and the reference with a compile error
-# in lab 3 (a name with a comma and quotes), beside a file, a hidden folder and __MACOSX, which are no students.
+# in lab 3 (a name with a comma and quotes), dee with lab files in two places (not graded: hers to fix, the class's
+# grading still exits 0), beside a file, a hidden folder and __MACOSX, which are no students.
 # One grading at a time: two at once took twice as long on 2 cores (instructor/docs/grading.md).
 class="$work/class"
 broken_student='cho, "broken"'
@@ -85,12 +86,15 @@ cp -r solution "$class/ana/labs"
 cp -r labs "$class/ben/labs"
 cp solution/*.cpp "$class/$broken_student/"
 python3 instructor/scripts/lib/inject.py "$class/$broken_student" 03_blinn_phong blinn_phong 'int oops = undeclared_variable;'
+mkdir -p "$class/dee/labs" "$class/dee/old"
+cp solution/*.cpp "$class/dee/labs/"
+cp solution/01_ray_casting.cpp "$class/dee/old/"
 echo "not a student" > "$class/README.txt"
 start=$(date +%s.%N)
 status=0
 "$whitted" grade-all "$class" --csv "$work/class.csv" --out "$work/class-grades" --parallel 1 --jobs "$jobs" \
     "${fence_options[@]}" > "$work/class.log" 2>&1 || status=$?
-summary+=("$(printf '%-16s %6s s  exit %d' "grade-all (3)" "$(python3 -c "print(f'{$(date +%s.%N) - $start:.1f}')")" "$status")")
+summary+=("$(printf '%-16s %6s s  exit %d' "grade-all (4)" "$(python3 -c "print(f'{$(date +%s.%N) - $start:.1f}')")" "$status")")
 if [ "$status" -ne 0 ] || ! python3 - "$work/class.csv" "$work/class-grades" solution <<'EOF'; then
 import csv, os, sys
 path, grades, solution = sys.argv[1:]
@@ -101,9 +105,12 @@ raw = open(path, "rb").read().decode()
 rows = list(csv.reader(raw.splitlines()))
 labs = sorted(name[:-4] for name in os.listdir(solution) if name.endswith(".cpp")) + ["integration"]
 ok(rows[0] == ["student", "score", "max_score", "status"] + labs, "header " + ",".join(rows[0]))
-ok([row[0] for row in rows[1:]] == ["ana", "ben", 'cho, "broken"'], "students " + str([row[0] for row in rows[1:]]))
+ok([row[0] for row in rows[1:]] == ["ana", "ben", 'cho, "broken"', "dee"], "students " + str([row[0] for row in rows[1:]]))
 ok('\n"cho, ""broken""",' in raw, "the name with a comma and quotes is not quoted as RFC 4180 says")
 by_name = {row[0]: row for row in rows[1:]}
+dee = by_name.pop("dee")
+ok(dee[1:4] == ["0", "0", "not_graded"], "dee (lab files in two places): " + ",".join(dee))
+ok("lab files were found in 2 places" in open(os.path.join(grades, "dee", "results.json")).read(), "dee is not told why")
 for name, row in by_name.items():
     ok(len(row) == len(rows[0]), name + ": " + str(len(row)) + " fields")
     ok(row[3] == "graded", name + ": status " + row[3])

@@ -4,6 +4,8 @@
 #   2. `make render` explains that lab 1 is missing;
 #   3. with labs 1-3 done, `make render` renders stage 3 and says which labs are missing;
 #   4. with every lab done (the reference files copied in), `make test` passes.
+# The GitHub Classroom workflow's graded steps give 0 points after 1 and every public point after 4
+# (instructor/scripts/test-classroom.sh runs the workflow's build step too, and times it).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 root=$(pwd)
@@ -33,6 +35,11 @@ grep -A40 "^Lab progress" "$work/test1.log" | grep -E "tests pass"
 # Tests of the whole renderer fail with stubs because labs are not done, not because something is broken: say so.
 grep -qE "integration: 0/[0-9]+ tests pass.* wait for a lab that is not done yet" "$work/test1.log" ||
     fail "the integration line does not say its tests wait for unfinished labs"
+# The GitHub Classroom workflow: valid, and its graded steps (read from it, run as GitHub runs them) give no point.
+python3 "$root/instructor/scripts/lib/classroom_steps.py" check . "$root/instructor/rubric.json"
+python3 "$root/instructor/scripts/lib/classroom_steps.py" grade . none > "$work/classroom1.log" 2>&1 ||
+    { cat "$work/classroom1.log"; fail "the classroom workflow's graded steps did not all fail on the stubs"; }
+tail -1 "$work/classroom1.log"
 
 echo "test-handout: 2. make render with the untouched stubs"
 if make render > "$work/render1.log" 2>&1; then fail "make render succeeded with stubs"; fi
@@ -58,4 +65,7 @@ grep -A12 "^Lab progress" "$work/test2.log"
 # Every progress line says ok: a skipped test (one that cannot run here) is no failure.
 not_ok=$(grep -E "tests pass" "$work/test2.log" | grep -v "^ok " || true)
 [ -z "$not_ok" ] || fail "progress lines without ok once every lab is done: $not_ok"
+python3 "$root/instructor/scripts/lib/classroom_steps.py" grade . all > "$work/classroom2.log" 2>&1 ||
+    { cat "$work/classroom2.log"; fail "the classroom workflow's graded steps did not all pass once every lab is done"; }
+tail -1 "$work/classroom2.log"
 echo "test-handout: passed"

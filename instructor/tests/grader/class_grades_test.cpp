@@ -91,3 +91,13 @@ TEST(ClassGrades, SummaryGivesMeanMedianAndFailures) {
                                      "not graded (1):\n"
                                      "  e: grader failure: the rubric is wrong\n");
 }
+
+// A submission the student must fix is listed with its reason, apart from the grader's failures.
+TEST(ClassGrades, ASubmissionNotGradedIsListedWithItsReason) {
+    std::vector<StudentGrade> grades = {graded("a", 10000, {}),
+                                        {"b", GradeStatus::not_graded, ResultsPoints{}, "lab files were found in 2 places"}};
+    EXPECT_EQ(class_summary(grades), "graded 1 of 2 students: mean 100, median 100 of 100\n"
+                                     "not graded (1):\n"
+                                     "  b: not graded: lab files were found in 2 places\n");
+    EXPECT_EQ(class_csv(grades, {}), "student,score,max_score,status\na,100,100,graded\nb,0,0,not_graded\n");
+}
