@@ -199,8 +199,8 @@ Command add_grade_all_command(CLI::App& app) {
     command->footer(
         "Each subfolder of FOLDER is one student, named by the folder (hidden folders and __MACOSX are skipped); each is graded "
         "by `whitted grade` in a child process, its output in GRADES_DIR/<student>/grade.log.\n"
-        "The CSV: student,score,max_score,status,<one column per lab>,integration; status is graded, grader_failure or error.\n"
-        "Exit code: 0 every student graded (whatever their points), 2 usage error, 3 a grading failed or could not finish "
+        "The CSV: student,score,max_score,status,<one column per lab>,integration; status is graded, not_graded (a submission the student must fix, e.g. lab files in two places), grader_failure or error.\n"
+        "Exit code: 0 every student graded (whatever their points) or not_graded, 2 usage error, 3 a grading failed or could not finish "
         "(the CSV is still written and lists it), 130 interrupted (no CSV written).");
     command->add_option("folder", options->folder, "The class: one subfolder per student, each a tree, its labs/ or the lab files")
         ->required()
