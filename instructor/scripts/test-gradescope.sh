@@ -13,17 +13,30 @@
 #   died        the grader cannot run: run_autograder still writes a valid results.json
 #
 #   test-gradescope.sh                 a folder as /autograder (AUTOGRADER_ROOT), on this machine's packages
-#   test-gradescope.sh --chroot DIR    a fresh Debian minbase root (debootstrap, as root; DIR is made and
-#                                      removed): setup.sh installs every package itself, as on Gradescope
+#   test-gradescope.sh --chroot DIR [--suite bookworm|noble|jammy]
+#                                      a fresh minbase root (debootstrap, as root; DIR is made and removed) of
+#                                      Debian 12 (the default) or Ubuntu 24.04/22.04, Gradescope's base images:
+#                                      setup.sh installs every package itself, as on Gradescope
 # Prints the time of setup.sh and of each submission; exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tree=$(pwd)
-chroot_dir=
-case "${1:-}" in
-"") ;;
---chroot) chroot_dir=${2:?usage: test-gradescope.sh [--chroot DIR]} ;;
-*) echo "usage: test-gradescope.sh [--chroot DIR]" >&2; exit 2 ;;
+chroot_dir= suite=bookworm
+usage() { echo "usage: test-gradescope.sh [--chroot DIR [--suite bookworm|noble|jammy]]" >&2; exit 2; }
+while [ $# -gt 0 ]; do
+    [ $# -ge 2 ] || usage
+    case $1 in
+    --chroot) chroot_dir=$2 ;;
+    --suite) suite=$2 ;;
+    *) usage ;;
+    esac
+    shift 2
+done
+case $suite in
+bookworm) bootstrap=(bookworm "" http://deb.debian.org/debian) ;;
+# Ubuntu's keyring is not Debian's: its signatures go unchecked here. CLI11 and stb are in universe.
+noble | jammy) bootstrap=(--no-check-gpg --components=main,universe "$suite" "" http://archive.ubuntu.com/ubuntu /usr/share/debootstrap/scripts/jammy) ;;
+*) usage ;;
 esac
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/test-gradescope.XXXXXX")
@@ -46,9 +59,10 @@ if [ -n "$chroot_dir" ]; then
     [ ! -e "$chroot_dir" ] || { echo "test-gradescope: $chroot_dir exists; give a new folder" >&2; exit 2; }
     command -v debootstrap > /dev/null || { echo "test-gradescope: --chroot needs debootstrap (apt-get install debootstrap)" >&2; exit 2; }
     start=$(date +%s.%N)
-    debootstrap --variant=minbase bookworm "$chroot_dir" http://deb.debian.org/debian > "$work/debootstrap.log" 2>&1 ||
+    for i in "${!bootstrap[@]}"; do [ -n "${bootstrap[$i]}" ] || bootstrap[$i]=$chroot_dir; done
+    debootstrap --variant=minbase "${bootstrap[@]}" > "$work/debootstrap.log" 2>&1 ||
         { tail -20 "$work/debootstrap.log"; echo "test-gradescope: debootstrap failed" >&2; exit 1; }
-    echo "test-gradescope: a fresh Debian 12 minbase root in $(seconds "$start") s"
+    echo "test-gradescope: a fresh $suite minbase root in $(seconds "$start") s"
     for mount in proc dev; do
         mount --bind "/$mount" "$chroot_dir/$mount"
         mounted+=("$chroot_dir/$mount")
