@@ -63,8 +63,8 @@ rm -f "$out.files"
 cat <<DONE
 wrote $out ($(du -k "$out" | cut -f1) KiB): setup.sh, run_autograder, autograder.conf and the instructor tree in whitted/
 On Gradescope, in the programming assignment's Configure Autograder page:
-  - Base image: Ubuntu 24.04 or Debian 12 (the packages must give C++20, CMake >= 3.22 and CLI11 2.x); upload $out.
-    Building the image runs setup.sh: about 4 minutes on 2 cores, ending with the reference solution graded at full marks.
+  - Base image: Ubuntu 24.04, Ubuntu 22.04 or Debian 12 (each checked with test-gradescope.sh --chroot); upload $out.
+    Building the image runs setup.sh: 3-4 minutes on 2 idle cores, ending with the reference solution graded at full marks.
   - Autograder timeout: at least $((budget + 180)) s (each submission has a budget of $budget s, $timeout s a test; most take 10-20 s).
   - Points: 100, as instructor/rubric.json gives them (hidden tests: visibility $visibility).
   - Submission method: upload and/or GitHub. Students may upload the lab files, a zip of labs/ or of the
