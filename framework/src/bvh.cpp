@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <future>
 #include <numeric>
+#include <system_error>
 
 namespace whitted {
 namespace {
@@ -16,49 +18,105 @@ constexpr double kTraversalCost = 1.0; // relative to one primitive test
 constexpr std::uint32_t kMaxLeafCount = 65535; // Node::count is 16 bits
 constexpr std::uint32_t kLeaf = 0;             // sah_split: make a leaf
 constexpr std::uint32_t kMedian = ~0u;         // sah_split: split at the median instead
+constexpr std::uint32_t kParallelCount = 1u << 16; // subtrees this big build their halves on two threads...
+constexpr int kParallelDepth = 2;                  // ...down to this depth (at most four threads at once)
+
+// The box around some primitives and the box around their centres.
+struct RangeBounds {
+    Aabb boxes, centers;
+
+    void expand(const Aabb& box, const Point3& center) {
+        boxes.expand(box);
+        centers.expand(center);
+    }
+    void expand(const RangeBounds& other) {
+        boxes.expand(other.boxes);
+        centers.expand(other.centers);
+    }
+};
+
+// Where a node's primitives split, and the bounds of each side.
+struct Split {
+    std::uint32_t mid = kMedian;
+    RangeBounds left, right;
+};
 
 struct Builder {
     std::span<const Aabb> boxes;
-    std::vector<Point3> centers;
+    std::span<const Point3> centers;
     std::vector<std::uint32_t>& order;
     std::vector<Bvh::Node>& nodes;
+    Bvh::Threads threads;
 
-    // Builds the subtree over order[first, first + count) at nodes[index].
-    void build(std::uint32_t index, std::uint32_t first, std::uint32_t count, int depth) {
-        Aabb bounds, centroid_bounds;
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            bounds.expand(boxes[order[i]]);
-            centroid_bounds.expand(centers[order[i]]);
-        }
-        nodes[index].bounds = bounds;
+    RangeBounds bounds_of(std::uint32_t first, std::uint32_t count) const {
+        RangeBounds range;
+        for (std::uint32_t i = first; i < first + count; ++i) range.expand(boxes[order[i]], centers[order[i]]);
+        return range;
+    }
+
+    // Builds the subtree over order[first, first + count) at nodes[index]; `range` bounds them.
+    // A child's bounds come from the parent's split (the boxes of its bins), not from another pass.
+    void build(std::uint32_t index, std::uint32_t first, std::uint32_t count, int depth, const RangeBounds& range) {
+        nodes[index].bounds = range.boxes;
         if (count <= kMaxLeafSize) return make_leaf(index, first, count);
 
-        const Vec3 extent = centroid_bounds.max - centroid_bounds.min;
+        const Vec3 extent = range.centers.max - range.centers.min;
         int axis = 0;
         if (extent.y > extent[axis]) axis = 1;
         if (extent.z > extent[axis]) axis = 2;
-        std::uint32_t mid = kMedian;
+        Split split;
         if (extent[axis] <= 0.0) {
             // All centroids coincide: no spatial split helps.
             if (count <= kMaxLeafCount) return make_leaf(index, first, count);
         } else if (depth < kMaxSahDepth) {
-            mid = sah_split(first, count, axis, centroid_bounds, bounds);
-            if (mid == kLeaf) return make_leaf(index, first, count);
+            split = sah_split(first, count, axis, range);
+            if (split.mid == kLeaf) return make_leaf(index, first, count);
         }
-        if (mid == kMedian) {
+        if (split.mid == kMedian) {
             auto begin = order.begin() + first;
             std::nth_element(begin, begin + count / 2, begin + count,
                              [&](std::uint32_t a, std::uint32_t b) { return centers[a][axis] < centers[b][axis]; });
-            mid = first + count / 2;
+            split.mid = first + count / 2;
+            split.left = bounds_of(first, split.mid - first);
+            split.right = bounds_of(split.mid, first + count - split.mid);
         }
         // The left child directly follows its parent; `first` names the right one.
         const auto left = static_cast<std::uint32_t>(nodes.size());
         nodes.resize(nodes.size() + 1);
-        build(left, first, mid - first, depth + 1);
+        if (threads == Bvh::Threads::several && count >= kParallelCount && depth < kParallelDepth)
+            return build_both(index, left, first, count, depth, split);
+        build(left, first, split.mid - first, depth + 1, split.left);
         const auto right = static_cast<std::uint32_t>(nodes.size());
         nodes.resize(nodes.size() + 1);
         nodes[index].first = right;
-        build(right, mid, first + count - mid, depth + 1);
+        build(right, split.mid, first + count - split.mid, depth + 1, split.right);
+    }
+
+    // The same as the two calls above, with the right subtree built on another
+    // thread into nodes of its own, then appended after the left one: the tree
+    // is the same, node for node, whatever the number of threads.
+    void build_both(std::uint32_t index, std::uint32_t left, std::uint32_t first, std::uint32_t count, int depth,
+                    const Split& split) {
+        const std::uint32_t right_count = first + count - split.mid;
+        std::vector<Bvh::Node> right_nodes(1);
+        right_nodes.reserve(2 * right_count);
+        auto build_right = [&, this] {
+            Builder{boxes, centers, order, right_nodes, threads}.build(0, split.mid, right_count, depth + 1, split.right);
+        };
+        std::future<void> right_done;
+        try {
+            right_done = std::async(std::launch::async, build_right); // the two halves of `order` do not overlap
+        } catch (const std::system_error&) {
+            build_right(); // no thread to be had (a process limit): one after the other
+        }
+        build(left, first, split.mid - first, depth + 1, split.left);
+        if (right_done.valid()) right_done.get();
+        const auto right = static_cast<std::uint32_t>(nodes.size());
+        nodes[index].first = right;
+        for (Bvh::Node& node : right_nodes) {
+            if (node.count == 0) node.first += right; // an inner node's second child, now counted from here
+            nodes.push_back(node);
+        }
     }
 
     void make_leaf(std::uint32_t index, std::uint32_t first, std::uint32_t count) {
@@ -66,25 +124,26 @@ struct Builder {
         nodes[index].count = static_cast<std::uint16_t>(count);
     }
 
-    // Partitions by the cheapest bin boundary and returns the split position;
-    // kLeaf when a leaf is cheaper than any split, kMedian when no boundary separates.
-    std::uint32_t sah_split(std::uint32_t first, std::uint32_t count, int axis, const Aabb& centroid_bounds,
-                            const Aabb& bounds) {
+    // Partitions by the cheapest bin boundary and returns the split position with
+    // the bounds of both sides; kLeaf when a leaf is cheaper than any split,
+    // kMedian when no boundary separates.
+    Split sah_split(std::uint32_t first, std::uint32_t count, int axis, const RangeBounds& range) {
         struct Bin {
-            Aabb box;
+            RangeBounds bounds;
             std::uint32_t count = 0;
         };
         std::array<Bin, kBins> bins{};
-        const double lo = centroid_bounds.min[axis];
-        const double scale = kBins / (centroid_bounds.max[axis] - lo);
-        if (!std::isfinite(scale)) return kMedian; // a subnormal spread: bins cannot tell the centroids apart
+        const double lo = range.centers.min[axis];
+        const double scale = kBins / (range.centers.max[axis] - lo);
+        if (!std::isfinite(scale)) return {}; // a subnormal spread: bins cannot tell the centroids apart
         auto bin_of = [&](std::uint32_t prim) {
             // Clamped as a double: the product may overflow to infinity, which no int holds.
             return static_cast<int>(std::clamp((centers[prim][axis] - lo) * scale, 0.0, kBins - 1.0));
         };
         for (std::uint32_t i = first; i < first + count; ++i) {
-            Bin& bin = bins[bin_of(order[i])];
-            bin.box.expand(boxes[order[i]]);
+            const std::uint32_t prim = order[i];
+            Bin& bin = bins[bin_of(prim)];
+            bin.bounds.expand(boxes[prim], centers[prim]);
             ++bin.count;
         }
         // Sweep from the right to know the cost of every right-hand side.
@@ -92,7 +151,7 @@ struct Builder {
         Aabb right_box;
         std::uint32_t right_count = 0;
         for (int b = kBins - 1; b > 0; --b) {
-            right_box.expand(bins[b].box);
+            right_box.expand(bins[b].bounds.boxes);
             right_count += bins[b].count;
             right_cost[b] = right_box.half_area() * right_count;
         }
@@ -101,7 +160,7 @@ struct Builder {
         double best_cost = kInfinity;
         int best_bin = -1;
         for (int b = 1; b < kBins; ++b) {
-            left_box.expand(bins[b - 1].box);
+            left_box.expand(bins[b - 1].bounds.boxes);
             left_count += bins[b - 1].count;
             if (left_count == 0 || left_count == count) continue;
             const double cost = left_box.half_area() * left_count + right_cost[b];
@@ -110,29 +169,32 @@ struct Builder {
                 best_bin = b;
             }
         }
-        if (best_bin < 0) return kMedian;
-        const double leaf_cost = bounds.half_area() * count;
-        const double split_cost = kTraversalCost * bounds.half_area() + best_cost;
-        if (count <= kMaxLeafCount && leaf_cost <= split_cost) return kLeaf;
+        if (best_bin < 0) return {};
+        const double leaf_cost = range.boxes.half_area() * count;
+        const double split_cost = kTraversalCost * range.boxes.half_area() + best_cost;
+        if (count <= kMaxLeafCount && leaf_cost <= split_cost) return {kLeaf, {}, {}};
+        Split split;
+        for (int b = 0; b < kBins; ++b) (b < best_bin ? split.left : split.right).expand(bins[b].bounds);
         auto middle = std::partition(order.begin() + first, order.begin() + first + count,
                                      [&](std::uint32_t prim) { return bin_of(prim) < best_bin; });
-        return static_cast<std::uint32_t>(middle - order.begin());
+        split.mid = static_cast<std::uint32_t>(middle - order.begin());
+        return split;
     }
 };
 
 } // namespace
 
-Bvh::Bvh(std::span<const Aabb> boxes) {
+Bvh::Bvh(std::span<const Aabb> boxes, Threads threads) {
     order_.resize(boxes.size());
     std::iota(order_.begin(), order_.end(), 0u);
     if (boxes.empty()) return;
     std::vector<Point3> centers(boxes.size());
     for (std::size_t i = 0; i < boxes.size(); ++i) centers[i] = boxes[i].center();
-    nodes_.reserve(2 * boxes.size());
+    nodes_.reserve(2 * boxes.size()); // never grown, so never copied; the room left unused is never touched
     nodes_.resize(1);
-    Builder builder{boxes, std::move(centers), order_, nodes_};
-    builder.build(0, 0, static_cast<std::uint32_t>(boxes.size()), 0);
-    nodes_.shrink_to_fit();
+    Builder builder{boxes, centers, order_, nodes_, threads};
+    const auto count = static_cast<std::uint32_t>(boxes.size());
+    builder.build(0, 0, count, 0, builder.bounds_of(0, count));
 }
 
 } // namespace whitted

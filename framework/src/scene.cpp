@@ -21,6 +21,24 @@ std::uint64_t next_serial() {
     return ++counter;
 }
 
+// Rearranges `items` so that items[k] becomes what items[from[k]] was (`from` is a
+// permutation), following each cycle of it: every item moves once, and no copy is made.
+void permute_in_place(std::vector<Primitive>& items, std::span<const std::uint32_t> from) {
+    std::vector<bool> placed(items.size());
+    for (std::size_t start = 0; start < items.size(); ++start) {
+        if (placed[start]) continue;
+        Primitive first = std::move(items[start]);
+        std::size_t k = start;
+        while (from[k] != start) {
+            items[k] = std::move(items[from[k]]);
+            placed[k] = true;
+            k = from[k];
+        }
+        items[k] = std::move(first);
+        placed[k] = true;
+    }
+}
+
 } // namespace
 
 // See whitted/engine/vertex_normals.hpp for what is kept and why.
@@ -48,38 +66,31 @@ struct Scene::LabBvh {
 };
 
 Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
-    : data_(std::move(data)), kernels_(kernels), remote_(remote_scene_queries()),
-      lab_bvh_(std::make_shared<LabBvh>()), bvh_choice_(bvh), serial_(next_serial()) {
+    : data_(std::move(data)), lab_bvh_(std::make_shared<LabBvh>()), bvh_choice_(bvh), kernels_(kernels),
+      remote_(remote_scene_queries()), serial_(next_serial()) {
     // Bounded primitives go into the BVH, in its order; infinite planes follow.
-    std::vector<Primitive> bounded, unbounded;
-    std::vector<std::uint32_t> bounded_index, unbounded_index;
+    const std::size_t count = data_.primitives.size();
     std::vector<Aabb> boxes;
-    for (std::size_t i = 0; i < data_.primitives.size(); ++i) {
-        Primitive& primitive = data_.primitives[i];
-        if (auto box = bounds(primitive.shape)) {
+    std::vector<std::uint32_t> bounded_index, unbounded_index;
+    boxes.reserve(count);
+    bounded_index.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (auto box = bounds(data_.primitives[i].shape)) {
             boxes.push_back(*box);
-            bounded.push_back(std::move(primitive));
             bounded_index.push_back(static_cast<std::uint32_t>(i));
         } else {
-            unbounded.push_back(std::move(primitive));
             unbounded_index.push_back(static_cast<std::uint32_t>(i));
         }
     }
     const Bvh binary(boxes);
     bvh_ = std::make_shared<const WideBvh>(binary);
-    bounded_count_ = bounded.size();
-    data_.primitives.clear();
-    data_.primitives.reserve(bounded.size() + unbounded.size());
-    source_index_.reserve(bounded.size() + unbounded.size());
-    for (std::uint32_t index : binary.order()) {
-        data_.primitives.push_back(std::move(bounded[index]));
-        source_index_.push_back(bounded_index[index]);
-    }
-    for (std::size_t i = 0; i < unbounded.size(); ++i) {
-        data_.primitives.push_back(std::move(unbounded[i]));
-        source_index_.push_back(unbounded_index[i]);
-    }
-    for (std::size_t i = 0; i < data_.primitives.size(); ++i) data_.primitives[i].index = static_cast<std::uint32_t>(i);
+    bounded_count_ = boxes.size();
+    source_index_.reserve(count);
+    for (std::uint32_t index : binary.order()) source_index_.push_back(bounded_index[index]);
+    source_index_.insert(source_index_.end(), unbounded_index.begin(), unbounded_index.end());
+    // Moved into that order where they are: a big scene's primitives are not copied.
+    permute_in_place(data_.primitives, source_index_);
+    for (std::size_t i = 0; i < count; ++i) data_.primitives[i].index = static_cast<std::uint32_t>(i);
     if (data_.acceleration == Acceleration::grid)
         grid_ = std::make_shared<const UniformGrid>(primitive_boxes(bounded_primitives()));
     // Each area light's points draw numbers of their own: no two lights share them.

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
-#include <sstream>
 #include <system_error>
 
 namespace whitted {
@@ -36,15 +35,22 @@ LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& lim
     } else if (extension != ".nff") {
         throw SceneError(name + ": unknown scene format '" + path.extension().string() + "' (expected .nff or .p3f)");
     }
-    if (const std::uintmax_t size = std::filesystem::file_size(path, error); !error && size > limits.max_file_bytes)
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (!error && size > limits.max_file_bytes)
         throw SceneError(name + ": the file has " + std::to_string(size) + " bytes, more than the " +
                          std::to_string(limits.max_file_bytes) + " a scene file may have");
     std::ifstream file(path, std::ios::binary);
     if (!file) throw SceneError(name + ": cannot open the file (missing or unreadable)");
-    std::ostringstream text;
-    text << file.rdbuf();
+    // Read straight into a string of the file's size: big scenes are read, and their memory touched, once.
+    std::string text;
+    if (!error) text.reserve(static_cast<std::size_t>(size));
+    char buffer[1 << 16];
+    while (file.read(buffer, sizeof buffer) || file.gcount() > 0) {
+        text.append(buffer, static_cast<std::size_t>(file.gcount()));
+        if (text.size() > limits.max_file_bytes) break; // it grew since: parse_scene says so
+    }
     if (file.bad()) throw SceneError(name + ": cannot read the file");
-    return parse_scene(text.str(), dialect, name, limits);
+    return parse_scene(text, dialect, name, limits);
 }
 
 LoadedScene parse_scene(std::string_view text, Dialect dialect, std::string_view file_name,

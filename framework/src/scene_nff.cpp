@@ -8,7 +8,7 @@ namespace whitted::detail {
 namespace {
 
 /// `v`: the NFF angle spans the centres of the top and bottom pixel rows.
-void read_viewpoint(SceneBuilder& scene, const Token& keyword) {
+void read_nff_viewpoint(SceneBuilder& scene, const Token& keyword) {
     const Viewpoint view = scene.read_viewpoint(keyword);
     if (view.res_y < 2)
         scene.tokens().fail(view.res_y_token, "expected at least 2 pixel rows (the NFF angle is measured between the "
@@ -35,7 +35,7 @@ void read_light(SceneBuilder& scene) {
 }
 
 /// `f r g b Kd Ks Shine T ior`: highlights and mirror reflections are white in NFF.
-void read_material(SceneBuilder& scene) {
+void read_nff_material(SceneBuilder& scene) {
     NumberReader numbers(scene.tokens(), "'f'", 8);
     Material material;
     material.color = numbers.color("the material colour");
@@ -76,13 +76,13 @@ LoadedScene parse_nff(TokenStream& tokens, const SceneLimits& limits) {
         const std::string_view word = keyword.text;
         if (scene.read_shared(keyword)) continue;
         if (word == "v") {
-            read_viewpoint(scene, keyword);
+            read_nff_viewpoint(scene, keyword);
         } else if (word == "b") {
             scene.data().background = NumberReader(tokens, "'b'", 3).color("the background colour");
         } else if (word == "l") {
             read_light(scene);
         } else if (word == "f") {
-            read_material(scene);
+            read_nff_material(scene);
         } else if (word == "c") {
             read_cone(scene, keyword);
         } else if (word == "pp") {

@@ -25,7 +25,7 @@ Token read_word(TokenStream& tokens, std::string_view keyword, std::string_view 
 /// `v`: the P3F angle is the full view-plane height, optionally followed by
 /// `aperture a` (the lens diameter in pixel widths) and `focal f` (the distance
 /// in focus over the view distance), and by the motion-blur shutter `time0 t0 time1 t1`.
-void read_viewpoint(SceneBuilder& scene, const Token& keyword) {
+void read_p3f_viewpoint(SceneBuilder& scene, const Token& keyword) {
     TokenStream& tokens = scene.tokens();
     const Viewpoint view = scene.read_viewpoint(keyword);
     double aperture = 0.0, focal_ratio = 1.0;
@@ -81,7 +81,7 @@ void read_environment(SceneBuilder& scene, const Token& keyword) {
 }
 
 /// `f Rd Gd Bd Kd Rs Gs Bs Ks Shine T ior`, optionally followed by the course's `roughness`.
-void read_material(SceneBuilder& scene) {
+void read_p3f_material(SceneBuilder& scene) {
     NumberReader numbers(scene.tokens(), "'f'", 11);
     Material material;
     material.color = numbers.color("the diffuse colour");
@@ -161,7 +161,7 @@ LoadedScene parse_p3f(TokenStream& tokens, const SceneLimits& limits) {
         const std::string_view word = keyword.text;
         if (scene.read_shared(keyword)) continue;
         if (word == "v") {
-            read_viewpoint(scene, keyword);
+            read_p3f_viewpoint(scene, keyword);
         } else if (word == "accel") {
             scene.data().acceleration = read_acceleration(tokens, keyword);
         } else if (word == "spp") {
@@ -178,7 +178,7 @@ LoadedScene parse_p3f(TokenStream& tokens, const SceneLimits& limits) {
             const Point3 position = numbers.vec3("the light position");
             scene.add_light(position, numbers.color("the light colour"));
         } else if (word == "f") {
-            read_material(scene);
+            read_p3f_material(scene);
         } else if (word == "pl") {
             read_plane(scene, keyword);
         } else if (word == "box") {

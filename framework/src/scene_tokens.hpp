@@ -56,6 +56,9 @@ class TokenStream {
     /// "file:line:col" of the token.
     std::string where(const Token& token) const;
 
+    /// The whole text being read.
+    std::string_view text() const { return text_; }
+
     /// The file name the messages give (paths in the file are relative to its folder).
     const std::string& file_name() const { return file_name_; }
 

@@ -90,8 +90,9 @@ WideBvh::WideBvh(const Bvh& binary) {
         root_count_ = tree[0].count;
         return;
     }
+    // Each wide node takes at least one inner node of the binary tree, which has (size - 1) / 2.
+    nodes_.reserve(tree.size() / 2); // never grown, so never copied; the room left unused is never touched
     Collapser{tree, nodes_}.collapse(0);
-    nodes_.shrink_to_fit();
 }
 
 } // namespace whitted

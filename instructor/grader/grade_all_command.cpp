@@ -9,6 +9,7 @@
 #include "grader/path_inside.hpp"
 #include "grader/submission.hpp"
 #include "process/process_runner.hpp"
+#include "usage_error.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -46,10 +47,6 @@ struct GradeAllOptions {
     bool quiet = false;
     std::map<std::string, std::string> passed_on; // grade's options given, by name ("--timeout" -> "5")
     bool allow_exposed_answers = false;
-};
-
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
 };
 
 // The class: FOLDER's subfolders (the students), sorted; hidden folders and

@@ -6,6 +6,7 @@
 #include "exit_codes.hpp"
 #include "grader/builder.hpp"
 #include "grader/grade_all_command.hpp"
+#include "usage_error.hpp"
 #include "grader/grading.hpp"
 #include "grader/html_report.hpp"
 #include "grader/output_marker.hpp"
@@ -43,10 +44,6 @@ struct GradeOptions {
     std::string sandbox = "auto";
     std::string hidden_visibility = "hidden";
     bool quiet = false;
-};
-
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
 };
 
 // A folder the grader writes must be new, empty or written by it before

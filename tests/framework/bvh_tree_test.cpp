@@ -104,7 +104,7 @@ TEST(AccelerationNone, TestsEveryPrimitiveAndFindsTheSameHits) {
         const Ray ray{Point3(0.0, 0.0, 20.0), glm::normalize(Vec3(std::sin(i * 0.37) * 0.4, std::cos(i * 0.61) * 0.4, -1.0))};
         const std::optional<Hit> a = with_bvh.closest_hit(ray), b = without.closest_hit(ray);
         ASSERT_EQ(a.has_value(), b.has_value()) << "ray " << i;
-        if (a) EXPECT_EQ(a->t, b->t);
+        if (a) { EXPECT_EQ(a->t, b->t); }
         EXPECT_EQ(with_bvh.occluded(ray, Interval{0.0, 15.0}), without.occluded(ray, Interval{0.0, 15.0}));
     }
 }

@@ -52,7 +52,7 @@ void expect_grid_matches_testing_everything(const std::vector<Primitive>& primit
         const Interval feeler{0.0, 0.4 * size};
         EXPECT_EQ(grid.occluded(ray, primitives, feeler), closest_hit(ray, primitives, feeler).has_value()) << what;
     }
-    if (primitives.size() > 10) EXPECT_GT(hits, 20) << what << ": the test's rays should hit";
+    if (primitives.size() > 10) { EXPECT_GT(hits, 20) << what << ": the test's rays should hit"; }
 }
 
 } // namespace

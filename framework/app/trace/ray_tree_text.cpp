@@ -20,7 +20,7 @@ std::string vec(const Vec3& v) {
     return text;
 }
 
-const char* kind_name(RayKind kind) {
+const char* kind_phrase(RayKind kind) {
     switch (kind) {
     case RayKind::eye: return "eye ray";
     case RayKind::shadow: return "shadow feeler";
@@ -63,7 +63,7 @@ struct TextWriter {
 
     std::string title(int index) const {
         const RayNode& node = tree.nodes[index];
-        std::string text = kind_name(node.kind);
+        std::string text = kind_phrase(node.kind);
         if (node.kind == RayKind::shadow) {
             const std::string light = light_of(context.scene, node);
             if (light.empty()) return text + " (to no light of the scene)";

@@ -1,9 +1,11 @@
 // The BVH must find exactly what testing every primitive finds.
+#include "whitted/engine/bvh.hpp"
 #include "whitted/labs.hpp"
 #include "whitted/scene.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 using namespace whitted;
@@ -89,4 +91,28 @@ TEST(Bvh, EmptySceneHitsNothing) {
     const Scene scene(std::move(data));
     EXPECT_FALSE(scene.closest_hit(Ray{Point3(0.0), Vec3(0.0, 0.0, -1.0)}).has_value());
     EXPECT_FALSE(scene.occluded(Ray{Point3(0.0), Vec3(0.0, 0.0, -1.0)}, Interval{0.0, 10.0}));
+}
+
+// Big trees build their two halves on other threads, into nodes of their own
+// that are then appended: the tree must be the one a single thread builds,
+// node for node, or a picture could depend on the machine.
+TEST(Bvh, SeveralThreadsBuildTheTreeOneThreadBuilds) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> position(-100.0, 100.0), size(0.01, 2.0);
+    std::vector<Aabb> boxes(300'000); // above the size that builds on several threads, two levels down
+    for (Aabb& box : boxes) {
+        box.min = Point3(position(rng), position(rng), position(rng));
+        box.max = box.min + Vec3(size(rng), size(rng), size(rng));
+    }
+    const Bvh one(boxes, Bvh::Threads::one), several(boxes, Bvh::Threads::several);
+    ASSERT_EQ(one.order().size(), several.order().size());
+    EXPECT_TRUE(std::equal(one.order().begin(), one.order().end(), several.order().begin()));
+    ASSERT_EQ(one.nodes().size(), several.nodes().size());
+    for (std::size_t i = 0; i < one.nodes().size(); ++i) {
+        const Bvh::Node &a = one.nodes()[i], &b = several.nodes()[i];
+        ASSERT_TRUE(a.first == b.first && a.count == b.count && a.bounds.min == b.bounds.min &&
+                    a.bounds.max == b.bounds.max)
+            << "node " << i;
+    }
+    EXPECT_GT(one.nodes().size(), boxes.size() / 4); // a real tree, not one leaf
 }

@@ -55,7 +55,7 @@ TEST(BvhClosestHit, StaysInsideTheRange) {
         const std::optional<Hit> yours = bvh_closest_hit(scene, ray, beyond);
         const std::optional<Hit> every = closest_hit(ray, scene.bounded_primitives(), beyond);
         ASSERT_EQ(yours.has_value(), every.has_value());
-        if (every) EXPECT_EQ(yours->t, every->t);
+        if (every) { EXPECT_EQ(yours->t, every->t); }
         // And a range that ends before it: nothing.
         EXPECT_FALSE(bvh_closest_hit(scene, ray, Interval{0.0, first->t * 0.999}).has_value());
     }

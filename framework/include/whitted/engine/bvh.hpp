@@ -23,11 +23,14 @@ class Bvh {
         std::uint16_t count = 0; // number of primitives; 0 for an inner node
     };
 
+    /// Whether a big tree may build its subtrees on other threads (the tree is the same either way).
+    enum class Threads { one, several };
+
     Bvh() = default;
 
     /// Builds the hierarchy over the boxes. Afterwards `order()[i]` is the index
     /// (into `boxes`) of the primitive that belongs at position i.
-    explicit Bvh(std::span<const Aabb> boxes);
+    explicit Bvh(std::span<const Aabb> boxes, Threads threads = Threads::several);
 
     std::span<const std::uint32_t> order() const { return order_; }
     std::span<const Node> nodes() const { return nodes_; }

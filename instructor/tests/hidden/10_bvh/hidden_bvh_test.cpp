@@ -61,7 +61,7 @@ TEST(HiddenBvhClosestHit, SpheresOnlyWithRandomRanges) {
         const std::optional<Hit> yours = bvh_closest_hit(scene, ray, range);
         const std::optional<Hit> every = closest_hit(ray, scene.bounded_primitives(), range);
         ASSERT_EQ(yours.has_value(), every.has_value());
-        if (every) EXPECT_EQ(yours->t, every->t);
+        if (every) { EXPECT_EQ(yours->t, every->t); }
         EXPECT_EQ(bvh_occluded(scene, ray, range), every.has_value());
     }
 }
