@@ -83,7 +83,7 @@ std::string describe(const Token& token) {
 TokenStream::TokenStream(std::string_view text, std::string_view file_name, std::size_t max_token_length)
     : text_(text), file_name_(file_name), max_token_length_(max_token_length) {
     // Editors on some systems start UTF-8 files with a byte-order mark: skip it.
-    if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = line_start_ = 3; // columns count from after it
     // Others save "Unicode" text as UTF-16, which has a NUL byte beside every letter.
     if (text_.starts_with("\xFF\xFE") || text_.starts_with("\xFE\xFF"))
         fail(Token{}, "expected a text file in ASCII or UTF-8, found UTF-16 (save the file as UTF-8)");
@@ -102,28 +102,31 @@ Token TokenStream::next() {
 }
 
 Token TokenStream::scan() {
-    // Skip blanks and comments, counting lines and columns as we go.
-    while (pos_ < text_.size()) {
+    // Skip blanks and comments, counting lines as we go; a column is its byte's distance from the line's start.
+    const std::size_t size = text_.size();
+    while (pos_ < size) {
         const char c = text_[pos_];
         if (c == '#') {
-            while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_, ++column_;
+            const std::size_t end = text_.find('\n', pos_);
+            pos_ = end == std::string_view::npos ? size : end;
         } else if (c == '\n') {
-            ++pos_, ++line_, column_ = 1;
+            line_start_ = ++pos_;
+            ++line_;
         } else if (is_space(c)) {
-            ++pos_, ++column_;
+            ++pos_;
         } else {
             break;
         }
     }
-    if (pos_ == text_.size()) return last_end_;
-    Token token{{}, line_, column_};
+    if (pos_ == size) return last_end_;
+    Token token{{}, line_, static_cast<int>(pos_ - line_start_) + 1};
     const std::size_t start = pos_;
-    while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '#') ++pos_, ++column_;
+    while (pos_ < size && !is_space(text_[pos_]) && text_[pos_] != '#') ++pos_;
     token.text = text_.substr(start, pos_ - start);
     if (token.text.size() > max_token_length_)
         fail(token, "expected a word or number of at most " + std::to_string(max_token_length_) +
                         " characters, found one of " + std::to_string(token.text.size()) + " (is this a scene file?)");
-    last_end_ = Token{{}, line_, column_};
+    last_end_ = Token{{}, line_, static_cast<int>(pos_ - line_start_) + 1};
     return token;
 }
 

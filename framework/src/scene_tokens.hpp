@@ -73,7 +73,7 @@ class TokenStream {
     std::size_t max_token_length_;
     std::size_t pos_ = 0;
     int line_ = 1;
-    int column_ = 1;
+    std::size_t line_start_ = 0; // where line_ starts in text_
     std::size_t taken_ = 0;
     Token last_end_;              // where the end of the file is reported: just after the last token
     std::optional<Token> peeked_;
