@@ -1,5 +1,5 @@
 // Lab 1 — ray casting: primary rays, three shapes, and the closest hit.
-// Handout: docs/labs/01_ray_casting.md. Tests: ctest -L lab1
+// Handout: docs/labs/01_ray_casting.md. Tests: make test LAB=1
 // Replace each `not_implemented();` line with your code.
 #include "whitted/labs.hpp"
 

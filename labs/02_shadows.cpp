@@ -1,6 +1,6 @@
 // Lab 2 — shadows: secondary rays that do not hit their own surface, shadow
 // feelers, and Lambert's diffuse light.
-// Handout: docs/labs/02_shadows.md. Tests: ctest -L lab2
+// Handout: docs/labs/02_shadows.md. Tests: make test LAB=2
 #include "whitted/labs.hpp"
 
 namespace whitted {

@@ -1,6 +1,6 @@
 // Lab 3 — the Blinn-Phong reflection model with ambient light and several
 // coloured lights.
-// Handout: docs/labs/03_blinn_phong.md. Tests: ctest -L lab3
+// Handout: docs/labs/03_blinn_phong.md. Tests: make test LAB=3
 #include "whitted/labs.hpp"
 
 namespace whitted {

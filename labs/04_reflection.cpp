@@ -1,6 +1,6 @@
 // Lab 4 — mirror reflection: the reflected direction and one more level of
 // the ray tree.
-// Handout: docs/labs/04_reflection.md. Tests: ctest -L lab4
+// Handout: docs/labs/04_reflection.md. Tests: make test LAB=4
 #include "whitted/labs.hpp"
 
 namespace whitted {

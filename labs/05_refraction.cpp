@@ -1,6 +1,6 @@
 // Lab 5 — refraction: Snell's law, total internal reflection, and rays that
 // enter or leave a transparent object.
-// Handout: docs/labs/05_refraction.md. Tests: ctest -L lab5
+// Handout: docs/labs/05_refraction.md. Tests: make test LAB=5
 #include "whitted/labs.hpp"
 
 namespace whitted {

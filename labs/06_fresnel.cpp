@@ -1,6 +1,6 @@
 // Lab 6 — Fresnel: how much light a glass surface reflects and how much it lets
 // through, depending on the angle.
-// Handout: docs/labs/06_fresnel.md. Tests: ctest -L lab6
+// Handout: docs/labs/06_fresnel.md. Tests: make test LAB=6
 #include "whitted/labs.hpp"
 
 namespace whitted {

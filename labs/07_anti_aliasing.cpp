@@ -1,6 +1,6 @@
 // Lab 7 — anti-aliasing: several samples a pixel instead of one ray through its
 // centre, spread over the pixel on a jittered grid and averaged.
-// Handout: docs/labs/07_anti_aliasing.md. Tests: ctest -L lab7
+// Handout: docs/labs/07_anti_aliasing.md. Tests: make test LAB=7
 #include "whitted/labs.hpp"
 
 namespace whitted {

@@ -2,7 +2,7 @@
 // penumbra, is partly hidden. Replace it by many point lights spread over it:
 // labs 2 and 3 then light and shadow each of them, and the shadow's edge
 // becomes the fraction of those points the hit point sees.
-// Handout: docs/labs/08_soft_shadows.md. Tests: ctest -L lab8
+// Handout: docs/labs/08_soft_shadows.md. Tests: make test LAB=8
 #include "whitted/labs.hpp"
 
 namespace whitted {

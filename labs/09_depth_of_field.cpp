@@ -2,7 +2,7 @@
 // every point of the lens that pass through one point of the plane in focus
 // meet there again (that point is sharp); a point nearer or farther is seen
 // through many lens points at slightly different places (a blurred disk).
-// Handout: docs/labs/09_depth_of_field.md. Tests: ctest -L lab9
+// Handout: docs/labs/09_depth_of_field.md. Tests: make test LAB=9
 #include "whitted/labs.hpp"
 
 namespace whitted {

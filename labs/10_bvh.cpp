@@ -2,7 +2,7 @@
 // primitives, boxes around groups of boxes, so that a ray skips every group
 // whose box it misses. Testing every primitive costs a ray O(n); a good BVH
 // makes it about O(log n), the difference between minutes and a second.
-// Handout: docs/labs/10_bvh.md. Tests: ctest -L lab10
+// Handout: docs/labs/10_bvh.md. Tests: make test LAB=10
 #include "whitted/labs.hpp"
 
 namespace whitted {

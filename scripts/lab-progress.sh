@@ -36,7 +36,7 @@ while IFS=$'\t' read -r n stem title _; do
         elif [ -n "$unfinished" ]; then
             echo "     its tests use lab $unfinished, which is not done yet"
         else
-            echo "     some results are wrong: cd $build && ctest -L lab$n --output-on-failure"
+            echo "     some results are wrong: make test LAB=$n"
         fi
         [ -n "$unfinished" ] || unfinished=$n
     fi
@@ -63,7 +63,7 @@ for group in framework integration cli; do
 done
 echo
 if [ $status -ne 0 ]; then
-    echo "Details of a lab's failures: cd $build && ctest -L lab3 --output-on-failure   (for lab 3)"
+    echo "Details of a lab's failures: make test LAB=3   (for lab 3)"
     echo "Failed image tests leave yours/reference/diff pictures in $build/test-output/."
 fi
 exit $status
