@@ -21,6 +21,8 @@ SPD_DIR ?= ../shared/scenes/spd
 BENCH_FLAKES ?= 4,5,6
 BENCH_SCENES ?= $(wildcard $(SPD_DIR)/teapot6.nff $(SPD_DIR)/mount6.nff $(SPD_DIR)/tetra6.nff)
 BENCH_ARGS ?=
+# The last committed figures: make bench flags whitted's load or render times that got worse.
+BENCH_BASELINE ?= instructor/bench/baseline.json
 
 MINUTES ?= 10
 # make gradescope: the zip and the choices it carries (instructor/scripts/make-autograder.sh).
@@ -83,7 +85,7 @@ bench: configure
 	@cmake --build $(BUILD_DIR) -j$(JOBS) --target whitted-bench whitted-as-student
 	@test -d "$(SPD_DIR)" || echo "note: no SPD scenes in $(SPD_DIR): benching the generated scenes only (make bench SPD_DIR=folder/with/teapot6.nff...)"
 	@./$(BUILD_DIR)/whitted-bench --flake $(BENCH_FLAKES) $(BENCH_SCENES) \
-	  --student-whitted $(BUILD_DIR)/whitted-as-student $(BENCH_ARGS)
+	  --student-whitted $(BUILD_DIR)/whitted-as-student $(if $(wildcard $(BENCH_BASELINE)),--baseline $(BENCH_BASELINE)) $(BENCH_ARGS)
 
 test-grader: build
 	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash instructor/scripts/test-grader.sh

@@ -43,14 +43,16 @@ struct Split {
 
 struct Builder {
     std::span<const Aabb> boxes;
-    std::span<const Point3> centers;
     std::vector<std::uint32_t>& order;
     std::vector<Bvh::Node>& nodes;
     Bvh::Threads threads;
 
+    // A box's centre along one axis, as Aabb::center() computes it (read from the box, not stored: less memory to fill).
+    double center(std::uint32_t prim, int axis) const { return 0.5 * (boxes[prim].min[axis] + boxes[prim].max[axis]); }
+
     RangeBounds bounds_of(std::uint32_t first, std::uint32_t count) const {
         RangeBounds range;
-        for (std::uint32_t i = first; i < first + count; ++i) range.expand(boxes[order[i]], centers[order[i]]);
+        for (std::uint32_t i = first; i < first + count; ++i) range.expand(boxes[order[i]], boxes[order[i]].center());
         return range;
     }
 
@@ -75,7 +77,7 @@ struct Builder {
         if (split.mid == kMedian) {
             auto begin = order.begin() + first;
             std::nth_element(begin, begin + count / 2, begin + count,
-                             [&](std::uint32_t a, std::uint32_t b) { return centers[a][axis] < centers[b][axis]; });
+                             [&](std::uint32_t a, std::uint32_t b) { return center(a, axis) < center(b, axis); });
             split.mid = first + count / 2;
             split.left = bounds_of(first, split.mid - first);
             split.right = bounds_of(split.mid, first + count - split.mid);
@@ -101,7 +103,7 @@ struct Builder {
         std::vector<Bvh::Node> right_nodes(1);
         right_nodes.reserve(2 * right_count);
         auto build_right = [&, this] {
-            Builder{boxes, centers, order, right_nodes, threads}.build(0, split.mid, right_count, depth + 1, split.right);
+            Builder{boxes, order, right_nodes, threads}.build(0, split.mid, right_count, depth + 1, split.right);
         };
         std::future<void> right_done;
         try {
@@ -138,12 +140,12 @@ struct Builder {
         if (!std::isfinite(scale)) return {}; // a subnormal spread: bins cannot tell the centroids apart
         auto bin_of = [&](std::uint32_t prim) {
             // Clamped as a double: the product may overflow to infinity, which no int holds.
-            return static_cast<int>(std::clamp((centers[prim][axis] - lo) * scale, 0.0, kBins - 1.0));
+            return static_cast<int>(std::clamp((center(prim, axis) - lo) * scale, 0.0, kBins - 1.0));
         };
         for (std::uint32_t i = first; i < first + count; ++i) {
             const std::uint32_t prim = order[i];
             Bin& bin = bins[bin_of(prim)];
-            bin.bounds.expand(boxes[prim], centers[prim]);
+            bin.bounds.expand(boxes[prim], boxes[prim].center());
             ++bin.count;
         }
         // Sweep from the right to know the cost of every right-hand side.
@@ -188,11 +190,9 @@ Bvh::Bvh(std::span<const Aabb> boxes, Threads threads) {
     order_.resize(boxes.size());
     std::iota(order_.begin(), order_.end(), 0u);
     if (boxes.empty()) return;
-    std::vector<Point3> centers(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) centers[i] = boxes[i].center();
     nodes_.reserve(2 * boxes.size()); // never grown, so never copied; the room left unused is never touched
     nodes_.resize(1);
-    Builder builder{boxes, centers, order_, nodes_, threads};
+    Builder builder{boxes, order_, nodes_, threads};
     const auto count = static_cast<std::uint32_t>(boxes.size());
     builder.build(0, 0, count, 0, builder.bounds_of(0, count));
 }

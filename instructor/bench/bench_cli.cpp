@@ -59,6 +59,10 @@ CommandLine parse_command_line(int argc, char** argv) {
     app.add_option("--student-whitted", o.student_whitted,
                    "Also measure this build with the student's labs (e.g. build/whitted-student)")
         ->check(CLI::ExistingFile);
+    app.add_option("--baseline", o.baseline,
+                   "Flag whitted's load or render times that got worse than in this earlier results.json "
+                   "(make bench: instructor/bench/baseline.json)")
+        ->check(CLI::ExistingFile);
     app.footer("Example: whitted-bench --flake 4,5,6 teapot6.nff mount6.nff --runs 5 --out bench-results");
 
     try {

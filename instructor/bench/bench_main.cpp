@@ -6,7 +6,8 @@
 // Why a separate program: the benchmark runs every renderer as its own process,
 // so each one's times and peak memory are its own, and a crash in one of them
 // costs a row of the table, not the benchmark. Exit code: 0 when every run
-// succeeded, 1 when some failed, 2 for bad input.
+// succeeded (and, with --baseline, nothing got slower), 1 when some failed or a
+// regression was flagged, 2 for bad input.
 #include "bench_options.hpp"
 #include "bench_scenes.hpp"
 #include "bench_tools.hpp"
@@ -15,6 +16,8 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <optional>
 #include <stdexcept>
 
 namespace {
@@ -28,7 +31,17 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
     if (!file) throw std::runtime_error("cannot write " + path.string());
 }
 
+std::string read_file(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (!file && !file.eof()) throw std::runtime_error("cannot read " + path.string());
+    return text;
+}
+
 int run(const BenchOptions& options) {
+    // A baseline that is not a results.json stops the benchmark before it runs, not after.
+    const std::string baseline = options.baseline.empty() ? "" : read_file(options.baseline);
+    if (!baseline.empty()) check_baseline({}, options.settings, baseline);
     const BenchTools tools = find_tools(options);
     const std::filesystem::path out = std::filesystem::absolute(options.out).lexically_normal();
     for (const char* folder : {"scenes", "images", "pov", "runs"}) std::filesystem::create_directories(out / folder);
@@ -43,15 +56,26 @@ int run(const BenchOptions& options) {
         results.push_back(measure_scene(scenes[i], options.settings, tools, out));
     }
 
-    const std::string report = markdown_report(results, options.settings);
+    std::string report = markdown_report(results, options.settings);
+    std::optional<BaselineCheck> check;
+    if (!options.baseline.empty()) {
+        check = check_baseline(results, options.settings, baseline);
+        report += "\n" + baseline_section(*check, options.baseline.string());
+    }
     std::printf("\n%s\n%s", report.c_str(), terminal_chart(results).c_str());
     write_file(out / "results.md", report);
     write_file(out / "results.json", results_json(results, options.settings));
     write_file(out / "chart.svg", svg_chart(results, options.settings));
     std::printf("\nwrote %s/results.md, results.json and chart.svg\n", out.c_str());
+    if (check && !check->regressions.empty()) {
+        std::fprintf(stderr, "whitted-bench: %zu regression%s against %s:\n", check->regressions.size(),
+                     check->regressions.size() == 1 ? "" : "s", options.baseline.c_str());
+        for (const Regression& r : check->regressions)
+            std::fprintf(stderr, "  %s %s: %s\n", r.scene.c_str(), r.what.c_str(), r.change.c_str());
+    }
     for (const SceneResult& r : results)
         if (r.failed()) return 1;
-    return 0;
+    return check && !check->regressions.empty() ? 1 : 0;
 }
 
 } // namespace

@@ -24,6 +24,7 @@ struct BenchOptions {
     bool povray = true, embree = true;
     std::filesystem::path whitted;         // empty: `whitted` next to the driver
     std::filesystem::path student_whitted; // empty: the student build is not measured
+    std::filesystem::path baseline;        // an earlier results.json to flag regressions against; empty: none
 };
 
 /// The options, or the exit code when the driver must stop now (0 after --help, 2 for bad input).

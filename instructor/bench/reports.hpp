@@ -36,6 +36,33 @@ std::vector<TargetCheck> check_targets(const std::vector<SceneResult>& results, 
 /// The targets as a Markdown section.
 std::string targets_section(const std::vector<SceneResult>& results, const BenchSettings& settings);
 
+/// A figure of whitted's that got worse than in the baseline.
+struct Regression {
+    std::string scene, what, change; // "flake6", "load + build", "0.35 s → 0.52 s (1.49×)"
+};
+
+/// What comparing with a baseline found: the regressions, or a note why nothing was compared.
+struct BaselineCheck {
+    std::vector<Regression> regressions;
+    int compared = 0; // scenes found in both
+    std::string note; // why nothing was compared, else empty
+};
+
+/// Beyond this factor over the baseline (and this many seconds slower) a time is a regression;
+/// a render's ratio to Embree, beyond kRatioMargin (Embree's run takes the machine's drift out of it).
+inline constexpr double kRegressionMargin = 1.25;
+inline constexpr double kRegressionFloorSeconds = 0.005;
+inline constexpr double kRatioMargin = 1.15;
+
+/// Compares whitted's load + build and render times with the baseline's (an earlier results.json),
+/// scene by scene by name; a baseline of other settings is not compared. Throws std::invalid_argument
+/// when the baseline is not JSON.
+BaselineCheck check_baseline(const std::vector<SceneResult>& results, const BenchSettings& settings,
+                             const std::string& baseline_text);
+
+/// The check as a Markdown section.
+std::string baseline_section(const BaselineCheck& check, const std::string& baseline_name);
+
 /// Render times as horizontal bars of Unicode blocks, for the terminal.
 std::string terminal_chart(const std::vector<SceneResult>& results);
 

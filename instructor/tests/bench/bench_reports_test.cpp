@@ -105,3 +105,65 @@ TEST(BenchReports, JsonHasEveryRunAndNullForMissingNumbers) {
     EXPECT_EQ(json["scenes"][2]["embree"]["failure"], "Embree on teapot6 exited with code 3");
     EXPECT_TRUE(json["failed"].get<bool>());
 }
+
+namespace {
+
+// A baseline written by hand in results.json's shape (not by results_json, the code whose output it stands for).
+std::string baseline_json(double flake4_load, double flake4_over_embree, double teapot_render, int size = 512) {
+    return R"({"settings": {"size": )" + std::to_string(size) + R"(, "threads": 2, "max_depth": 5},
+      "scenes": [
+        {"name": "flake4", "whitted_over_embree": )" + std::to_string(flake4_over_embree) + R"(,
+         "whitted": {"load_build_seconds": {"median": )" + std::to_string(flake4_load) + R"(},
+                     "render_seconds": {"median": 0.08}}},
+        {"name": "teapot6", "whitted_over_embree": null,
+         "whitted": {"load_build_seconds": {"median": 0.001},
+                     "render_seconds": {"median": )" + std::to_string(teapot_render) + R"(}}},
+        {"name": "gone", "whitted": {}}]})";
+}
+
+// sample_results(): flake4 loads in 0.001 s, renders in 0.08 s at 0.93x Embree; teapot6 renders in 0.05 s, no Embree.
+std::vector<SceneResult> slow_flake4_load() {
+    std::vector<SceneResult> results = sample_results();
+    for (Sample& s : results[0].of(Tool::whitted).samples) s.load_build_seconds = 0.040;
+    return results;
+}
+
+} // namespace
+
+TEST(BenchReports, BaselineWithinItsMarginsFlagsNothing) {
+    // flake4: load 0.001 vs 0.0009 (only 0.1 ms slower), ratio 0.93 vs 0.85 (1.09x); teapot6 0.05 vs 0.045 (1.11x).
+    const BaselineCheck check = check_baseline(sample_results(), BenchSettings{}, baseline_json(0.0009, 0.85, 0.045));
+    EXPECT_TRUE(check.regressions.empty());
+    EXPECT_EQ(check.compared, 2); // flake4 and teapot6; flake5 is not in the baseline, "gone" not measured
+    EXPECT_NE(baseline_section(check, "b.json").find("No regression on the 2 scenes compared."), std::string::npos);
+}
+
+TEST(BenchReports, BaselineFlagsSlowerLoadsRatiosAndRenders) {
+    // flake4: load 0.040 vs 0.030 (1.33x, 10 ms), render ratio 0.93 vs 0.70 (1.33x); teapot6 0.05 vs 0.035 s (1.43x).
+    const BaselineCheck check = check_baseline(slow_flake4_load(), BenchSettings{}, baseline_json(0.030, 0.70, 0.035));
+    ASSERT_EQ(check.regressions.size(), 3u);
+    EXPECT_EQ(check.regressions[0].scene, "flake4");
+    EXPECT_EQ(check.regressions[0].what, "load + build");
+    EXPECT_EQ(check.regressions[0].change, "0.03 s → 0.04 s (1.33×)");
+    EXPECT_EQ(check.regressions[1].what, "render ÷ Embree");
+    EXPECT_EQ(check.regressions[2].scene, "teapot6");
+    EXPECT_EQ(check.regressions[2].what, "render");
+    const std::string section = baseline_section(check, "b.json");
+    EXPECT_NE(section.find("| flake4 | load + build | 0.03 s → 0.04 s (1.33×) |"), std::string::npos) << section;
+}
+
+TEST(BenchReports, BaselineRenderWithEmbreeIsJudgedByTheRatioNotTheTime) {
+    // The machine was slower today: flake4's render took longer, but so did Embree's (same ratio): no regression.
+    std::vector<SceneResult> results = sample_results();
+    for (Sample& s : results[0].of(Tool::whitted).samples) s.render_seconds *= 2.0;
+    for (Sample& s : results[0].of(Tool::embree).samples) s.render_seconds *= 2.0;
+    const BaselineCheck check = check_baseline(results, BenchSettings{}, baseline_json(0.001, 0.93, 0.05));
+    EXPECT_TRUE(check.regressions.empty());
+}
+
+TEST(BenchReports, BaselineOfOtherSettingsOrNotJsonIsNotCompared) {
+    const BaselineCheck check = check_baseline(slow_flake4_load(), BenchSettings{}, baseline_json(0.001, 0.5, 0.01, 256));
+    EXPECT_TRUE(check.regressions.empty());
+    EXPECT_NE(check.note.find("other settings"), std::string::npos);
+    EXPECT_THROW(check_baseline(sample_results(), BenchSettings{}, "{not json"), std::invalid_argument);
+}
