@@ -1,5 +1,5 @@
 // `whitted generate KIND [--level N] [-o FILE]`: write a procedural benchmark
-// scene (sphereflake, fractal tetrahedron as NFF; a dense torus mesh as P3F), to a file or to stdout.
+// scene (sphereflake, fractal tetrahedron, random triangle soup as NFF; a dense torus mesh as P3F), to a file or to stdout.
 //
 // Why a command: students and `make bench` get scenes of any size without
 // downloading SPD, and the output is an ordinary scene file to render or read.
@@ -60,12 +60,12 @@ Command add_generate_command(CLI::App& app) {
                   std::to_string(generator.min_level) + " to " + std::to_string(generator.max_level) + ", default " +
                   std::to_string(generator.default_level);
     }
-    CLI::App* command = app.add_subcommand("generate", "Write a procedural benchmark scene: sphereflake and tetra (SPD style, NFF), torus (one dense P3F mesh).");
-    command->add_option("kind", options->kind, "What to generate: sphereflake or tetra")
+    CLI::App* command = app.add_subcommand("generate", "Write a procedural benchmark scene: sphereflake and tetra (SPD style, NFF), torus (one dense P3F mesh), soup (random triangles, NFF).");
+    command->add_option("kind", options->kind, "What to generate: sphereflake, tetra, torus or soup")
         ->required()
         ->check(CLI::IsMember(names));
     command->add_option("--level", options->level, "Recursion level (" + levels + ")");
-    command->add_option("-o,--output", options->output, "Scene file to write: .nff for sphereflake and tetra, .p3f for torus (default: standard output)");
+    command->add_option("-o,--output", options->output, "Scene file to write: .nff for sphereflake, tetra and soup, .p3f for torus (default: standard output)");
     command->footer("Example: whitted generate sphereflake --level 4 -o flake4.nff\n"
                     "Exit code: 0 scene written, 2 a bad kind, level or option, or the file cannot be written, "
                     "3 whitted itself failed.");

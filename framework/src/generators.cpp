@@ -10,10 +10,11 @@
 namespace whitted {
 namespace {
 
-constexpr std::array<Generator, 3> kGenerators{{
+constexpr std::array<Generator, 4> kGenerators{{
     {"sphereflake", "flake", "spheres", ".nff", 0, kMaxSphereflakeLevel, 4, sphereflake_sphere_count, write_sphereflake_nff},
     {"tetra", "tetra", "triangles", ".nff", kMinTetraLevel, kMaxTetraLevel, 6, tetra_triangle_count, write_tetra_nff},
     {"torus", "torus", "triangles", ".p3f", kMinTorusLevel, kMaxTorusLevel, 5, torus_triangle_count, write_torus_p3f},
+    {"soup", "soup", "triangles", ".nff", kMinSoupLevel, kMaxSoupLevel, 3, soup_triangle_count, write_soup_nff},
 }};
 
 } // namespace

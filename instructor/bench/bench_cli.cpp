@@ -39,13 +39,14 @@ CommandLine parse_command_line(int argc, char** argv) {
     CommandLine result;
     BenchOptions& o = result.options;
     BenchSettings& s = o.settings;
-    std::string flake = "4", tetra = "none";
+    std::string flake = "4", tetra = "none", soup = "none";
     bool no_povray = false, no_embree = false;
 
     CLI::App app{"whitted-bench: time whitted against POV-Ray 3.7 and Embree 3 on the same scenes (make bench)."};
     app.add_option("scenes", o.scenes, "More scenes to measure (.nff or .p3f)")->check(CLI::ExistingFile);
     app.add_option("--flake", flake, "Sphereflake levels to generate and measure, e.g. 4,5,6, or none (default 4)");
     app.add_option("--tetra", tetra, "Fractal tetrahedron levels to generate and measure, e.g. 6 (default none)");
+    app.add_option("--soup", soup, "Random triangle soup levels to generate and measure, e.g. 4 (default none)");
     app.add_option("--size", s.size, "Image width and height in pixels (default 512)")->check(CLI::Range(1, 16384));
     app.add_option("--threads", s.threads, "Rendering threads of every program (default 2)")->check(CLI::Range(1, 1024));
     app.add_option("--depth", s.depth, "Deepest ray; the eye ray is depth 1 (default 5)")->check(CLI::Range(1, 100));
@@ -69,6 +70,7 @@ CommandLine parse_command_line(int argc, char** argv) {
         app.parse(argc, argv);
         o.flake_levels = parse_levels("sphereflake", flake);
         o.tetra_levels = parse_levels("tetra", tetra);
+        o.soup_levels = parse_levels("soup", soup);
     } catch (const CLI::CallForHelp& help) {
         result.exit_code = app.exit(help);
         return result;
@@ -83,8 +85,8 @@ CommandLine parse_command_line(int argc, char** argv) {
     }
     o.povray = !no_povray;
     o.embree = !no_embree;
-    if (o.scenes.empty() && o.flake_levels.empty() && o.tetra_levels.empty()) {
-        std::fprintf(stderr, "whitted-bench: no scenes: give scene files, --flake or --tetra\n");
+    if (o.scenes.empty() && o.flake_levels.empty() && o.tetra_levels.empty() && o.soup_levels.empty()) {
+        std::fprintf(stderr, "whitted-bench: no scenes: give scene files, --flake, --tetra or --soup\n");
         result.exit_code = 2;
     }
     return result;

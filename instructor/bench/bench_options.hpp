@@ -19,6 +19,7 @@ struct BenchOptions {
     std::vector<std::filesystem::path> scenes; // NFF or P3F files given on the command line
     std::vector<int> flake_levels{4};          // generated sphereflakes
     std::vector<int> tetra_levels;             // generated fractal tetrahedra
+    std::vector<int> soup_levels;              // generated random triangle soups (scenes the renderer is not tuned to)
     BenchSettings settings;
     std::filesystem::path out = "bench-results";
     bool povray = true, embree = true;

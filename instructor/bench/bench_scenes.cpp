@@ -55,6 +55,7 @@ std::vector<BenchScene> prepare_scenes(const BenchOptions& options, const std::f
     std::vector<BenchScene> scenes;
     for (int level : options.flake_levels) scenes.push_back(generate(*find_generator("sphereflake"), level, folder));
     for (int level : options.tetra_levels) scenes.push_back(generate(*find_generator("tetra"), level, folder));
+    for (int level : options.soup_levels) scenes.push_back(generate(*find_generator("soup"), level, folder));
     for (BenchScene& scene : files) {
         scene.name = unique_name(scenes, scene.name);
         scenes.push_back(scene);

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -154,14 +156,51 @@ TEST(Tetra, HasFourToTheLevelTrianglesFacingOutwards) {
     EXPECT_EQ(tetra_triangle_count(6), 4096u);
 }
 
-TEST(Tetra, OutputLoadsAndBadLevelsAreRefused) {
+// What a generator writes, read back by the scene loader.
+LoadedScene load_generated(void (*write)(int level, std::ostream& out), int level, const std::string& name) {
     std::ostringstream text;
-    write_tetra_nff(3, text);
-    const LoadedScene scene = load_text(text.str(), "tetra3.nff");
+    write(level, text);
+    return load_text(text.str(), name);
+}
+
+TEST(Tetra, OutputLoadsAndBadLevelsAreRefused) {
+    const LoadedScene scene = load_generated(write_tetra_nff, 3, "tetra3.nff");
     EXPECT_EQ(scene.data.primitives.size(), 64u);
     EXPECT_EQ(scene.data.lights.size(), 1u);
     EXPECT_EQ(message_of([] { for_each_tetra_triangle(0, [](const auto&) {}); }), "tetra level must be 1 to 9, found 0");
     EXPECT_EQ(message_of([] { for_each_tetra_triangle(10, [](const auto&) {}); }), "tetra level must be 1 to 9, found 10");
+}
+
+// The soup is random but fixed: the same triangles on every machine, in clusters,
+// with real area (the loader refuses flat polygons), and as many as the level says.
+TEST(Soup, HasTheLevelsCountOfTrianglesWithAreaInsideItsBox) {
+    std::size_t count = 0, slivers = 0;
+    std::array<Point3, 3> first{};
+    for_each_soup_triangle(2, [&](const std::array<Point3, 3>& t) {
+        if (count++ == 0) first = t;
+        const double area = 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+        const double longest = std::max({glm::length(t[1] - t[0]), glm::length(t[2] - t[1]), glm::length(t[0] - t[2])});
+        EXPECT_GT(area, 1e-9 * longest * longest);
+        if (area < 0.05 * longest * longest) ++slivers;
+        for (const Point3& p : t) EXPECT_LT(max_abs_component(p), 20.0);
+    });
+    EXPECT_EQ(count, 4000u);
+    EXPECT_EQ(soup_triangle_count(2), 4000u);
+    EXPECT_GT(slivers, 400u); // about a fifth are slivers by construction
+    // Written again: the very same first triangle (a fixed seed, no library's distributions).
+    std::array<Point3, 3> again{};
+    bool taken = false;
+    for_each_soup_triangle(2, [&](const std::array<Point3, 3>& t) {
+        if (!taken) again = t, taken = true;
+    });
+    EXPECT_EQ(first, again);
+}
+
+TEST(Soup, OutputLoadsAndBadLevelsAreRefused) {
+    const LoadedScene scene = load_generated(write_soup_nff, 1, "soup1.nff");
+    EXPECT_EQ(scene.data.primitives.size(), 1000u);
+    EXPECT_EQ(scene.data.lights.size(), 2u);
+    EXPECT_EQ(message_of([] { for_each_soup_triangle(7, [](const auto&) {}); }), "soup level must be 1 to 6, found 7");
 }
 
 TEST(Generators, AreFoundByName) {

@@ -26,6 +26,8 @@ inline constexpr int kMinTetraLevel = 1;       // one tetrahedron, 4 triangles
 inline constexpr int kMaxTetraLevel = 9;       // 262,144 triangles
 inline constexpr int kMinTorusLevel = 1;       // 392 triangles
 inline constexpr int kMaxTorusLevel = 7;       // 1,605,632 triangles
+inline constexpr int kMinSoupLevel = 1;        // 1,000 triangles
+inline constexpr int kMaxSoupLevel = 6;        // 1,024,000 triangles
 
 /// One sphere of a sphereflake; the root has index 0 and no parent.
 struct FlakeSphere {
@@ -61,6 +63,16 @@ std::size_t torus_triangle_count(int level);
 
 /// Writes the whole P3F scene: `accel 2`, view, lights, a floor and the torus as one `mesh`.
 void write_torus_p3f(int level, std::ostream& out);
+
+/// Number of triangles of the random triangle soup of `level`: 1,000 4^(level - 1).
+std::size_t soup_triangle_count(int level);
+
+/// Calls `visit` with each triangle of the soup, the same ones on every machine.
+/// Throws std::invalid_argument when the level is outside kMinSoupLevel..kMaxSoupLevel.
+void for_each_soup_triangle(int level, const std::function<void(const std::array<Point3, 3>&)>& visit);
+
+/// Writes the whole NFF scene: view, background, two lights and the triangles in six clusters.
+void write_soup_nff(int level, std::ostream& out);
 
 /// The one-line message for a level outside `low..high`, or "" when it is inside.
 std::string generator_level_error(const std::string& kind, int level, int low, int high);
