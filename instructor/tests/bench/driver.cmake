@@ -11,9 +11,9 @@ set(args --flake 1 --size 32 --out "${OUT}/results")
 set(env)
 if(MODE STREQUAL "smoke")
   set(program "${BENCH}")
-  list(APPEND args --tetra 1 --runs 1 --warmup 0 --no-povray --no-embree)
+  list(APPEND args --tetra 1 --soup 1 --runs 1 --warmup 0 --no-povray --no-embree)
   set(expect_exit 0)
-  set(expect "POV-Ray comparison skipped: --no-povray.*\\| flake1 \\|.*\\| tetra1 \\|.*whitted  █")
+  set(expect "POV-Ray comparison skipped: --no-povray.*\\| flake1 \\|.*\\| tetra1 \\|.*\\| soup1 \\|.*whitted  █")
 else()
   # The driver looks for its helpers in its own folder, and for povray on PATH.
   file(COPY "${BENCH}" "${FAKES}/whitted-pov-export" "${FAKES}/povray" "${FAKES}/whitted-embree-rays"
