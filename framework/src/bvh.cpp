@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <future>
+#include <memory>
 #include <numeric>
 #include <system_error>
 
@@ -46,6 +47,8 @@ struct Builder {
     std::vector<std::uint32_t>& order;
     std::vector<Bvh::Node>& nodes;
     Bvh::Threads threads;
+    // sah_split's scratch: the bin of each primitive of the node being split (as many as the builder's own).
+    std::unique_ptr<std::uint8_t[]> bin_ids;
 
     // A box's centre along one axis, as Aabb::center() computes it (read from the box, not stored: less memory to fill).
     double center(std::uint32_t prim, int axis) const { return 0.5 * (boxes[prim].min[axis] + boxes[prim].max[axis]); }
@@ -103,7 +106,7 @@ struct Builder {
         std::vector<Bvh::Node> right_nodes(1);
         right_nodes.reserve(2 * right_count);
         auto build_right = [&, this] {
-            Builder{boxes, order, right_nodes, threads}.build(0, split.mid, right_count, depth + 1, split.right);
+            Builder{boxes, order, right_nodes, threads, std::make_unique_for_overwrite<std::uint8_t[]>(right_count)}.build(0, split.mid, right_count, depth + 1, split.right);
         };
         std::future<void> right_done;
         try {
@@ -118,6 +121,25 @@ struct Builder {
         for (Bvh::Node& node : right_nodes) {
             if (node.count == 0) node.first += right; // an inner node's second child, now counted from here
             nodes.push_back(node);
+        }
+    }
+
+    // Moves the primitives of order[first, first + count) whose bin (bin_ids) is below
+    // `best_bin` to the front and returns how many they are. The ends walk inwards and
+    // swap what stands on the wrong side, as std::partition does, so the order is the same.
+    std::uint32_t partition_by_bin(std::uint32_t first, std::uint32_t count, int best_bin) {
+        std::uint32_t* prims = order.data() + first;
+        std::uint8_t* ids = bin_ids.get();
+        std::uint32_t low = 0, high = count;
+        for (;;) {
+            while (low != high && ids[low] < best_bin) ++low;
+            if (low == high) return low;
+            --high;
+            while (low != high && ids[high] >= best_bin) --high;
+            if (low == high) return low;
+            std::swap(prims[low], prims[high]);
+            std::swap(ids[low], ids[high]);
+            ++low;
         }
     }
 
@@ -142,9 +164,12 @@ struct Builder {
             // Clamped as a double: the product may overflow to infinity, which no int holds.
             return static_cast<int>(std::clamp((center(prim, axis) - lo) * scale, 0.0, kBins - 1.0));
         };
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            const std::uint32_t prim = order[i];
-            Bin& bin = bins[bin_of(prim)];
+        std::uint8_t* ids = bin_ids.get(); // each primitive's bin, for the partition below
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const std::uint32_t prim = order[first + i];
+            const int b = bin_of(prim);
+            ids[i] = static_cast<std::uint8_t>(b);
+            Bin& bin = bins[b];
             bin.bounds.expand(boxes[prim], boxes[prim].center());
             ++bin.count;
         }
@@ -177,9 +202,7 @@ struct Builder {
         if (count <= kMaxLeafCount && leaf_cost <= split_cost) return {kLeaf, {}, {}};
         Split split;
         for (int b = 0; b < kBins; ++b) (b < best_bin ? split.left : split.right).expand(bins[b].bounds);
-        auto middle = std::partition(order.begin() + first, order.begin() + first + count,
-                                     [&](std::uint32_t prim) { return bin_of(prim) < best_bin; });
-        split.mid = static_cast<std::uint32_t>(middle - order.begin());
+        split.mid = first + partition_by_bin(first, count, best_bin);
         return split;
     }
 };
@@ -192,7 +215,7 @@ Bvh::Bvh(std::span<const Aabb> boxes, Threads threads) {
     if (boxes.empty()) return;
     nodes_.reserve(2 * boxes.size()); // never grown, so never copied; the room left unused is never touched
     nodes_.resize(1);
-    Builder builder{boxes, order_, nodes_, threads};
+    Builder builder{boxes, order_, nodes_, threads, std::make_unique_for_overwrite<std::uint8_t[]>(boxes.size())};
     const auto count = static_cast<std::uint32_t>(boxes.size());
     builder.build(0, 0, count, 0, builder.bounds_of(0, count));
 }

@@ -3,6 +3,7 @@
 
 #include "whitted/scene_loader.hpp"
 
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -13,7 +14,18 @@ namespace whitted::detail {
 
 namespace {
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
+constexpr bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
+
+// What the scanner does at a byte: one table lookup instead of seven comparisons a byte.
+enum class ByteKind : unsigned char { word, blank, newline, comment };
+constexpr std::array<ByteKind, 256> kByteKinds = [] {
+    std::array<ByteKind, 256> kinds{};
+    for (int c = 0; c < 256; ++c)
+        kinds[c] = c == '\n' ? ByteKind::newline : c == '#' ? ByteKind::comment
+                 : is_space(static_cast<char>(c)) ? ByteKind::blank : ByteKind::word;
+    return kinds;
+}();
+ByteKind kind_of(char c) { return kByteKinds[static_cast<unsigned char>(c)]; }
 
 bool starts_with_word(std::string_view text, std::string_view word) {
     if (text.size() < word.size()) return false;
@@ -105,15 +117,15 @@ Token TokenStream::scan() {
     // Skip blanks and comments, counting lines as we go; a column is its byte's distance from the line's start.
     const std::size_t size = text_.size();
     while (pos_ < size) {
-        const char c = text_[pos_];
-        if (c == '#') {
-            const std::size_t end = text_.find('\n', pos_);
-            pos_ = end == std::string_view::npos ? size : end;
-        } else if (c == '\n') {
+        const ByteKind kind = kind_of(text_[pos_]);
+        if (kind == ByteKind::blank) {
+            ++pos_;
+        } else if (kind == ByteKind::newline) {
             line_start_ = ++pos_;
             ++line_;
-        } else if (is_space(c)) {
-            ++pos_;
+        } else if (kind == ByteKind::comment) {
+            const std::size_t end = text_.find('\n', pos_);
+            pos_ = end == std::string_view::npos ? size : end;
         } else {
             break;
         }
@@ -121,7 +133,7 @@ Token TokenStream::scan() {
     if (pos_ == size) return last_end_;
     Token token{{}, line_, static_cast<int>(pos_ - line_start_) + 1};
     const std::size_t start = pos_;
-    while (pos_ < size && !is_space(text_[pos_]) && text_[pos_] != '#') ++pos_;
+    while (pos_ < size && kind_of(text_[pos_]) == ByteKind::word) ++pos_;
     token.text = text_.substr(start, pos_ - start);
     if (token.text.size() > max_token_length_)
         fail(token, "expected a word or number of at most " + std::to_string(max_token_length_) +
