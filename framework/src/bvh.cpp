@@ -106,7 +106,7 @@ struct Builder {
         std::vector<Bvh::Node> right_nodes(1);
         right_nodes.reserve(2 * right_count);
         auto build_right = [&, this] {
-            Builder{boxes, order, right_nodes, threads, std::make_unique_for_overwrite<std::uint8_t[]>(right_count)}.build(0, split.mid, right_count, depth + 1, split.right);
+            Builder{boxes, order, right_nodes, threads, std::make_unique<std::uint8_t[]>(right_count)}.build(0, split.mid, right_count, depth + 1, split.right);
         };
         std::future<void> right_done;
         try {
@@ -215,7 +215,7 @@ Bvh::Bvh(std::span<const Aabb> boxes, Threads threads) {
     if (boxes.empty()) return;
     nodes_.reserve(2 * boxes.size()); // never grown, so never copied; the room left unused is never touched
     nodes_.resize(1);
-    Builder builder{boxes, order_, nodes_, threads, std::make_unique_for_overwrite<std::uint8_t[]>(boxes.size())};
+    Builder builder{boxes, order_, nodes_, threads, std::make_unique<std::uint8_t[]>(boxes.size())};
     const auto count = static_cast<std::uint32_t>(boxes.size());
     builder.build(0, 0, count, 0, builder.bounds_of(0, count));
 }

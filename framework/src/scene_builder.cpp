@@ -38,13 +38,14 @@ bool is_text(std::string_view word) {
 
 SceneBuilder::SceneBuilder(TokenStream& tokens, const SceneLimits& limits) : tokens_(tokens), limits_(limits) {
     // Big scene files hold about one primitive a line (a sphere, a vertex, a face): room for
-    // that many, so that the list is never copied as it grows. Room left unused is never touched.
+    // that many, so that the list is never copied as it grows. Room left unused is never touched,
+    // and a file of short lines (comments) gets no more than about three times its size.
     const std::string_view text = tokens.text();
     std::size_t lines = 1;
     for (const char* c = text.data(), *end = c + text.size();
          (c = static_cast<const char*>(std::memchr(c, '\n', static_cast<std::size_t>(end - c)))); ++c)
         ++lines;
-    data().primitives.reserve(std::min({lines, text.size() / 8 + 1, limits.max_primitives}));
+    data().primitives.reserve(std::min({lines, text.size() / 32 + 1, limits.max_primitives}));
 }
 
 void SceneBuilder::warn(const Token& at, const std::string& message) {

@@ -41,7 +41,7 @@ std::string read_file(const std::filesystem::path& path) {
 int run(const BenchOptions& options) {
     // A baseline that is not a results.json stops the benchmark before it runs, not after.
     const std::string baseline = options.baseline.empty() ? "" : read_file(options.baseline);
-    if (!baseline.empty()) check_baseline({}, options.settings, baseline);
+    if (!options.baseline.empty()) check_baseline({}, options.settings, baseline); // an empty file too
     const BenchTools tools = find_tools(options);
     const std::filesystem::path out = std::filesystem::absolute(options.out).lexically_normal();
     for (const char* folder : {"scenes", "images", "pov", "runs"}) std::filesystem::create_directories(out / folder);
