@@ -106,7 +106,8 @@ struct Builder {
         std::vector<Bvh::Node> right_nodes(1);
         right_nodes.reserve(2 * right_count);
         auto build_right = [&, this] {
-            Builder{boxes, order, right_nodes, threads, std::make_unique<std::uint8_t[]>(right_count)}.build(0, split.mid, right_count, depth + 1, split.right);
+            Builder right{boxes, order, right_nodes, threads, std::make_unique<std::uint8_t[]>(right_count)};
+            right.build(0, split.mid, right_count, depth + 1, split.right);
         };
         std::future<void> right_done;
         try {

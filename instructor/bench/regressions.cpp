@@ -10,7 +10,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <stdexcept>
 
@@ -56,27 +55,28 @@ BaselineCheck check_baseline(const std::vector<SceneResult>& results, const Benc
         if (scene.is_object() && scene.contains("name") && scene["name"].is_string())
             by_name[scene["name"].get<std::string>()] = &scene;
     for (const SceneResult& result : results) {
+        // A time is flagged past the margin and the floor alike.
+        const auto flag_time = [&](const char* what, double now, double before) {
+            if (now > kRegressionMargin * before && now - before > kRegressionFloorSeconds)
+                check.regressions.push_back({result.name, what, format_change(now, before, "%.3g s")});
+        };
         const auto found = by_name.find(result.name);
         const Series& whitted = result.of(Tool::whitted);
         if (found == by_name.end() || !whitted.ok()) continue;
         const Json& before = *found->second;
         ++check.compared;
-        const double load_now = summarize(whitted, Metric::load_build).median;
-        const double load_before = number_at(before, {"whitted", "load_build_seconds", "median"});
-        if (load_now > kRegressionMargin * load_before && load_now - load_before > kRegressionFloorSeconds)
-            check.regressions.push_back({result.name, "load + build", format_change(load_now, load_before, "%.3g s")});
+        flag_time("load + build", summarize(whitted, Metric::load_build).median,
+                  number_at(before, {"whitted", "load_build_seconds", "median"}));
         const double ratio_now = ratio(whitted, result.of(Tool::embree), Metric::render);
         const double ratio_before = number_at(before, {"whitted_over_embree"});
-        if (ratio_now == ratio_now && ratio_before == ratio_before) {
+        if (!std::isnan(ratio_now) && !std::isnan(ratio_before)) {
             if (ratio_now > kRatioMargin * ratio_before)
                 check.regressions.push_back(
                     {result.name, "render ÷ Embree", format_change(ratio_now, ratio_before, "%.2f×")});
             continue;
         }
-        const double render_now = summarize(whitted, Metric::render).median;
-        const double render_before = number_at(before, {"whitted", "render_seconds", "median"});
-        if (render_now > kRegressionMargin * render_before && render_now - render_before > kRegressionFloorSeconds)
-            check.regressions.push_back({result.name, "render", format_change(render_now, render_before, "%.3g s")});
+        flag_time("render", summarize(whitted, Metric::render).median,
+                  number_at(before, {"whitted", "render_seconds", "median"}));
     }
     if (check.compared == 0) check.note = "no scene of this benchmark is in the baseline: nothing compared";
     return check;

@@ -6,7 +6,6 @@
 #include "exit_codes.hpp"
 #include "grader/builder.hpp"
 #include "grader/grade_all_command.hpp"
-#include "usage_error.hpp"
 #include "grader/grading.hpp"
 #include "grader/html_report.hpp"
 #include "grader/output_marker.hpp"
@@ -14,6 +13,7 @@
 #include "grader/results_json.hpp"
 #include "grader/submission.hpp"
 #include "grader/text.hpp"
+#include "usage_error.hpp"
 
 #include <algorithm>
 #include <iterator>
