@@ -114,7 +114,7 @@ TreeQueryCost closest_hit_cost(const BvhTree& tree, std::span<const Primitive> p
 }
 
 BvhTree framework_bvh_tree(std::span<const Aabb> boxes) {
-    const Bvh built(boxes);
+    const Bvh built(std::vector<Aabb>(boxes.begin(), boxes.end()));
     BvhTree tree;
     tree.order.assign(built.order().begin(), built.order().end());
     const std::span<const Bvh::Node> nodes = built.nodes();

@@ -104,15 +104,62 @@ TEST(Bvh, SeveralThreadsBuildTheTreeOneThreadBuilds) {
         box.min = Point3(position(rng), position(rng), position(rng));
         box.max = box.min + Vec3(size(rng), size(rng), size(rng));
     }
-    const Bvh one(boxes, Bvh::Threads::one), several(boxes, Bvh::Threads::several);
-    ASSERT_EQ(one.order().size(), several.order().size());
-    EXPECT_TRUE(std::equal(one.order().begin(), one.order().end(), several.order().begin()));
-    ASSERT_EQ(one.nodes().size(), several.nodes().size());
-    for (std::size_t i = 0; i < one.nodes().size(); ++i) {
-        const Bvh::Node &a = one.nodes()[i], &b = several.nodes()[i];
-        ASSERT_TRUE(a.first == b.first && a.count == b.count && a.bounds.min == b.bounds.min &&
-                    a.bounds.max == b.bounds.max)
-            << "node " << i;
+    // Without test costs (lab 10's yardstick tree) and with the renderer's (a third of them triangles).
+    std::vector<float> mixed(boxes.size(), 1.0f);
+    for (std::size_t i = 0; i < mixed.size(); i += 3) mixed[i] = 1.5f;
+    for (const std::vector<float>& costs : {std::vector<float>{}, mixed}) {
+        const Bvh one(boxes, costs, Bvh::Threads::one), several(boxes, costs, Bvh::Threads::several);
+        ASSERT_EQ(one.order().size(), several.order().size());
+        EXPECT_TRUE(std::equal(one.order().begin(), one.order().end(), several.order().begin()));
+        ASSERT_EQ(one.nodes().size(), several.nodes().size());
+        for (std::size_t i = 0; i < one.nodes().size(); ++i) {
+            const Bvh::Node &a = one.nodes()[i], &b = several.nodes()[i];
+            ASSERT_TRUE(a.first == b.first && a.count == b.count && a.bounds.min == b.bounds.min &&
+                        a.bounds.max == b.bounds.max)
+                << "node " << i << (costs.empty() ? "" : " (with test costs)");
+        }
+        EXPECT_GT(one.nodes().size(), boxes.size() / 4); // a real tree, not one leaf
     }
-    EXPECT_GT(one.nodes().size(), boxes.size() / 4); // a real tree, not one leaf
+}
+
+namespace {
+
+// A unit box at (x, 0, 0).
+Aabb box_at(double x) { return Aabb{Point3(x, 0.0, 0.0), Point3(x + 1.0, 1.0, 1.0)}; }
+
+std::uint32_t largest_leaf(const Bvh& bvh) {
+    std::uint32_t largest = 0;
+    for (const Bvh::Node& node : bvh.nodes()) largest = std::max<std::uint32_t>(largest, node.count);
+    return largest;
+}
+
+} // namespace
+
+// Three unit boxes 10 apart. Root box: 21 x 1 x 1, half area 21 + 1 + 21 = 43.
+// A leaf costs 43 x 3 = 129 tests. The best split (one box | two: half areas 3 and
+// 11 + 1 + 11 = 23) costs the node test plus each side's area times its tests:
+// 43 + 3 x 1 + 23 x 2 = 92 < 129, so without the rays' set-up (4 node tests,
+// 4 x 43 = 172 more) the SAH would split; with it the split costs 264 and the root
+// stays one leaf, so rays walk no tree.
+TEST(Bvh, WithTestCostsAFewShapesAreOneLeaf) {
+    const Bvh bvh({box_at(0.0), box_at(10.0), box_at(20.0)}, {1.0f, 1.0f, 1.0f});
+    ASSERT_EQ(bvh.nodes().size(), 1u);
+    EXPECT_EQ(bvh.nodes()[0].count, 3u);
+}
+
+// Two clusters, 1000 apart, of four unit boxes 10 apart. Within a cluster (31 x 1 x 1,
+// half area 63) a leaf of four triangles costs 63 x 6 = 378 tests; splitting it two and
+// two costs 63 + 2 x (23 x 3) = 201: with test costs a cluster of triangles is split. Four
+// spheres (4 tests, the small-leaf limit) stay one leaf, as every node of four does without costs.
+TEST(Bvh, WithTestCostsTrianglesFarApartGetSmallerLeaves) {
+    std::vector<Aabb> boxes;
+    for (const double cluster : {0.0, 1000.0})
+        for (int i = 0; i < 4; ++i) boxes.push_back(box_at(cluster + 10.0 * i));
+    EXPECT_EQ(largest_leaf(Bvh(boxes)), 4u);
+    EXPECT_EQ(largest_leaf(Bvh(boxes, std::vector<float>(8, 1.0f))), 4u);
+    EXPECT_LT(largest_leaf(Bvh(boxes, std::vector<float>(8, 1.5f))), 4u);
+}
+
+TEST(Bvh, TestCostsAreOnePerBox) {
+    EXPECT_THROW(Bvh({box_at(0.0), box_at(2.0)}, {1.0f}), std::invalid_argument);
 }

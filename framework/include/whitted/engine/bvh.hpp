@@ -28,9 +28,13 @@ class Bvh {
 
     Bvh() = default;
 
-    /// Builds the hierarchy over the boxes. Afterwards `order()[i]` is the index
-    /// (into `boxes`) of the primitive that belongs at position i.
-    explicit Bvh(std::span<const Aabb> boxes, Threads threads = Threads::several);
+    /// Builds the hierarchy over the boxes (taken to be reordered as the build
+    /// goes). Afterwards `order()[i]` is the index (into `boxes`) of the
+    /// primitive that belongs at position i. With `test_costs` (each primitive's
+    /// intersection test, in node tests) the SAH alone decides where the leaves
+    /// stop; without, every primitive costs one and every node of at most four
+    /// primitives is a leaf.
+    explicit Bvh(std::vector<Aabb> boxes, std::vector<float> test_costs = {}, Threads threads = Threads::several);
 
     std::span<const std::uint32_t> order() const { return order_; }
     std::span<const Node> nodes() const { return nodes_; }
