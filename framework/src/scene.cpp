@@ -7,6 +7,8 @@
 #include "whitted/engine/wide_bvh.hpp"
 #include "whitted/labs.hpp"
 
+#include "prefault.hpp"
+
 #include <atomic>
 #include <future>
 #include <mutex>
@@ -89,6 +91,7 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
     std::vector<float> test_costs;
     std::vector<std::uint32_t> bounded_index, unbounded_index;
     boxes.reserve(count);
+    std::future<void> prefaulted = detail::prefault_behind(boxes.data(), count * sizeof(Aabb));
     test_costs.reserve(count);
     bounded_index.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
@@ -101,6 +104,7 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
         }
     }
     bounded_count_ = boxes.size();
+    if (prefaulted.valid()) prefaulted.get(); // before the boxes move on (and are freed with the builder)
     const Bvh binary(std::move(boxes), std::move(test_costs));
     // The four-wide tree is collapsed while the primitives move into the binary tree's
     // order: neither reads what the other writes, and a big scene has two halves of its

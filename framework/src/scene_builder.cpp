@@ -1,6 +1,7 @@
 #include "scene_builder.hpp"
 
 #include "polygon.hpp"
+#include "prefault.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -41,11 +42,18 @@ SceneBuilder::SceneBuilder(TokenStream& tokens, const SceneLimits& limits) : tok
     // that many, so that the list is never copied as it grows. Room left unused is never touched,
     // and a file of short lines (comments) gets no more than about three times its size.
     const std::string_view text = tokens.text();
-    std::size_t lines = 1;
+    std::size_t lines = 1, sphere_lines = 0;
     for (const char* c = text.data(), *end = c + text.size();
-         (c = static_cast<const char*>(std::memchr(c, '\n', static_cast<std::size_t>(end - c)))); ++c)
+         (c = static_cast<const char*>(std::memchr(c, '\n', static_cast<std::size_t>(end - c)))); ++c) {
         ++lines;
+        if (end - c > 2 && c[1] == 's' && c[2] == ' ') ++sphere_lines;
+    }
     data().primitives.reserve(std::min({lines, text.size() / 32 + 1, limits.max_primitives}));
+    // The spheres' pages are mapped in on another thread while this one parses (one line,
+    // one primitive). Pages for the triangles of polygons are not: their count is not
+    // known from the lines, and pages they would never fill would only cost memory.
+    const std::size_t likely = std::min(data().primitives.capacity(), sphere_lines);
+    prefaulted_ = prefault_behind(data().primitives.data(), likely * sizeof(Primitive));
 }
 
 void SceneBuilder::warn(const Token& at, const std::string& message) {

@@ -11,6 +11,7 @@
 #include "whitted/scene_loader.hpp"
 
 #include <cstdint>
+#include <future>
 #include <optional>
 #include <span>
 #include <string>
@@ -78,6 +79,7 @@ class SceneBuilder {
     bool has_ambient_ = false;
     bool has_material_ = false;
     std::vector<std::size_t> uncoloured_lights_;
+    std::future<void> prefaulted_; // the primitives' pages, mapped in on another thread (after scene_: ends first)
 };
 
 /// Reads the three numbers that end both dialects' `f`: Shine T ior. An opaque

@@ -1,10 +1,12 @@
 #include "whitted/scene_loader.hpp"
 
+#include "prefault.hpp"
 #include "scene_builder.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <future>
 #include <system_error>
 
 namespace whitted {
@@ -43,7 +45,11 @@ LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& lim
     if (!file) throw SceneError(name + ": cannot open the file (missing or unreadable)");
     // Read straight into a string of the file's size: big scenes are read, and their memory touched, once.
     std::string text;
-    if (!error) text.reserve(static_cast<std::size_t>(size));
+    std::future<void> prefaulted; // declared after `text`: ends before it
+    if (!error) {
+        text.reserve(static_cast<std::size_t>(size));
+        prefaulted = detail::prefault_behind(text.data(), text.capacity());
+    }
     char buffer[1 << 16];
     while (file.read(buffer, sizeof buffer) || file.gcount() > 0) {
         text.append(buffer, static_cast<std::size_t>(file.gcount()));
