@@ -22,7 +22,7 @@ constexpr double kTraversalCost = 1.0; // relative to one primitive test
 // node tests. Only the root weighs it: a scene of a few shapes is one leaf, no walk.
 constexpr double kRaySetupCost = 4.0;
 // With test costs: a node of at most four primitives whose tests cost at most this is a leaf
-// (four spheres): a four-wide node costs about one test, so splitting it saves little and
+// (four spheres): a wide node costs about one test, so splitting it saves little and
 // costs memory and build time.
 constexpr double kSmallLeafCost = 4.0;
 constexpr std::uint32_t kMaxLeafCount = 65535; // Node::count is 16 bits

@@ -106,7 +106,7 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
     bounded_count_ = boxes.size();
     if (prefaulted.valid()) prefaulted.get(); // before the boxes move on (and are freed with the builder)
     const Bvh binary(std::move(boxes), std::move(test_costs));
-    // The four-wide tree is collapsed while the primitives move into the binary tree's
+    // The eight-wide tree is collapsed while the primitives move into the binary tree's
     // order: neither reads what the other writes, and a big scene has two halves of its
     // set-up time. (A small one does both on this thread: a thread costs more.)
     auto collapse = [&binary] { return std::make_shared<const WideBvh>(binary); };

@@ -1,4 +1,4 @@
-// Collapsing the binary SAH tree into four-wide nodes with float boxes.
+// Collapsing the binary SAH tree into eight-wide nodes with float boxes.
 #include "whitted/engine/wide_bvh.hpp"
 
 #include <algorithm>
@@ -36,7 +36,7 @@ struct Collapser {
     std::uint32_t collapse(std::uint32_t b) {
         std::uint32_t children[WideBvh::kWidth] = {left(b), right(b)};
         int count = 2;
-        // Open the inner child with the largest surface until there are four.
+        // Open the inner child with the largest surface until there are eight.
         while (count < WideBvh::kWidth) {
             int largest = -1;
             for (int i = 0; i < count; ++i) {

@@ -47,7 +47,7 @@ struct SceneData {
 
 /// The intersection tests one ray query makes (the `cost` pass).
 struct QueryCost {
-    std::uint64_t box_tests = 0;       // ray-box tests in the BVH (four per node visited)
+    std::uint64_t box_tests = 0;       // ray-box tests in the BVH (eight per node visited)
     std::uint64_t primitive_tests = 0; // ray-primitive tests (occlusion stops at the first hit)
 
     std::uint64_t total() const { return box_tests + primitive_tests; }

@@ -1,4 +1,4 @@
-// The reference renderer's fast path (float four-wide BVH, distance-only leaf
+// The reference renderer's fast path (float eight-wide BVH, distance-only leaf
 // kernels) must answer exactly as the labs' code testing every primitive does,
 // and render the very same image, bit for bit.
 #include "whitted/labs.hpp"

@@ -182,7 +182,7 @@ TEST(Passes, CostCountsMoreTestsWhereThereIsMoreToTest) {
 }
 
 TEST(QueryCost, CountsBoxAndShapeTests) {
-    // 216 balls in a grid: a ray far off tests only the root's four boxes; a ray
+    // 216 balls in a grid: a ray far off tests only the root's eight boxes; a ray
     // through the grid tests boxes and balls; stopping at the first hit
     // (occlusion) never tests more than finding the closest.
     SceneData data;
@@ -193,12 +193,12 @@ TEST(QueryCost, CountsBoxAndShapeTests) {
     const Scene scene(std::move(data));
     const Ray away{Point3(100.0, 100.0, 100.0), Vec3(0.0, 1.0, 0.0)};
     const QueryCost missing = scene.query_cost(away, Interval{}, false);
-    EXPECT_EQ(missing.box_tests, 4u);
+    EXPECT_EQ(missing.box_tests, 8u);
     EXPECT_EQ(missing.primitive_tests, 1u); // the plane, always tested
     const Ray through{Point3(3.0, 3.0, -20.0), Vec3(0.0, 0.0, 1.0)};
     const QueryCost closest = scene.query_cost(through, Interval{}, false);
     const QueryCost any = scene.query_cost(through, Interval{}, true);
     EXPECT_GT(closest.primitive_tests, 1u);
-    EXPECT_GT(closest.box_tests, 4u);
+    EXPECT_GT(closest.box_tests, 8u);
     EXPECT_LE(any.total(), closest.total());
 }

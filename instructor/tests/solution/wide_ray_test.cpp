@@ -120,3 +120,25 @@ TEST(WideRay, SceneLosesAnEdgeHitOnTheRayFromTheWorldOrigin) {
     EXPECT_TRUE(labs.occluded(ray, Interval{0.0, 10.0}));
     EXPECT_TRUE(fast.occluded(ray, Interval{0.0, 10.0}));
 }
+
+// A node's eight boxes are tested four at a time: a box in the second four
+// answers in its own bit with its own entry distance. The ray runs along +x from
+// the origin; box k spans x in [k + 1, k + 1.5], so the ray enters it at t = k + 1,
+// which WideRay gives along its direction scaled to [0.5, 1), here (0.5, 0, 0):
+// 2 (k + 1). Boxes 2 and 5 lie above the ray (y in [1, 2]).
+TEST(WideRay, EightBoxesAnswerInTheirOwnBits) {
+    const WideRay wide(Ray{Point3(0.0), Vec3(1.0, 0.0, 0.0)}, 16.0, 0.0, kInfinity);
+    alignas(64) float bounds[6][8];
+    for (int k = 0; k < 8; ++k) {
+        const bool above = k == 2 || k == 5;
+        bounds[0][k] = static_cast<float>(k + 1);
+        bounds[1][k] = static_cast<float>(k + 1.5);
+        bounds[2][k] = above ? 1.0f : -1.0f;
+        bounds[3][k] = above ? 2.0f : 1.0f;
+        bounds[4][k] = -1.0f;
+        bounds[5][k] = 1.0f;
+    }
+    float t_entry[8];
+    EXPECT_EQ(wide.hit_boxes(bounds, t_entry), 0b1101'1011u);
+    for (int k : {0, 1, 3, 4, 6, 7}) EXPECT_NEAR(t_entry[k], 2.0 * (k + 1), 1e-5) << "box " << k;
+}

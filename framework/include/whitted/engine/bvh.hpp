@@ -4,7 +4,7 @@
 // groups whose box the ray misses, so a ray costs about O(log n). This tree is
 // built once with the surface area heuristic over binned centroids, and keeps
 // each leaf's primitives as one contiguous range of `order()`. The renderer
-// queries it after WideBvh has collapsed it into four-wide nodes.
+// queries it after WideBvh has collapsed it into eight-wide nodes.
 #pragma once
 
 #include "whitted/aabb.hpp"

@@ -1,4 +1,4 @@
-// A ray prepared for testing four float boxes at once, conservatively.
+// A ray prepared for testing float boxes four at once, conservatively.
 //
 // Why: the wide BVH stores boxes in float and tests four per instruction, but a
 // box test that rounds the wrong way would lose a hit the exact test finds: a
@@ -75,34 +75,41 @@ class WideRay {
     /// Lowers the far end of the range after a hit at t.
     void shrink(double t) const { t_max_ = round_up(t * inverse_scale_); }
 
-    /// Tests four boxes (bounds[6][4] as in WideBvh::Node); returns a bit per box
-    /// the ray may meet within its range, and each box's entry distance.
-    unsigned hit_boxes(const float (&bounds)[6][4], float (&t_entry)[4]) const {
-#if defined(__SSE2__)
-        __m128 entry = _mm_set1_ps(t_min_);
-        __m128 exit = _mm_set1_ps(t_max_);
-        for (int axis = 0; axis < 3; ++axis) {
-            const __m128 inv = _mm_load_ps(inv_[axis]);
-            const __m128 t_near = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[near_[axis]]), _mm_load_ps(origin_entry_[axis])), inv);
-            const __m128 t_far = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[far_[axis]]), _mm_load_ps(origin_exit_[axis])), inv);
-            entry = _mm_max_ps(entry, t_near);
-            exit = _mm_min_ps(exit, t_far);
-        }
-        _mm_storeu_ps(t_entry, entry);
-        return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(entry, exit)));
-#else
+    /// Tests boxes side by side, four at a time (bounds[6][kBoxes] as in
+    /// WideBvh::Node); returns a bit per box the ray may meet within its range,
+    /// and each box's entry distance.
+    template <int kBoxes>
+    unsigned hit_boxes(const float (&bounds)[6][kBoxes], float (&t_entry)[kBoxes]) const {
+        static_assert(kBoxes % 4 == 0, "boxes are tested four at a time");
         unsigned mask = 0;
-        for (int i = 0; i < 4; ++i) {
-            float entry = t_min_, exit = t_max_;
+        for (int first = 0; first < kBoxes; first += 4) {
+#if defined(__SSE2__)
+            __m128 entry = _mm_set1_ps(t_min_);
+            __m128 exit = _mm_set1_ps(t_max_);
             for (int axis = 0; axis < 3; ++axis) {
-                entry = std::max(entry, (bounds[near_[axis]][i] - origin_entry_[axis][i]) * inv_[axis][i]);
-                exit = std::min(exit, (bounds[far_[axis]][i] - origin_exit_[axis][i]) * inv_[axis][i]);
+                const __m128 inv = _mm_load_ps(inv_[axis]);
+                const __m128 t_near =
+                    _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[near_[axis]] + first), _mm_load_ps(origin_entry_[axis])), inv);
+                const __m128 t_far =
+                    _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds[far_[axis]] + first), _mm_load_ps(origin_exit_[axis])), inv);
+                entry = _mm_max_ps(entry, t_near);
+                exit = _mm_min_ps(exit, t_far);
             }
-            t_entry[i] = entry;
-            if (entry <= exit) mask |= 1u << i;
+            _mm_storeu_ps(t_entry + first, entry);
+            mask |= static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(entry, exit))) << first;
+#else
+            for (int i = first; i < first + 4; ++i) {
+                float entry = t_min_, exit = t_max_;
+                for (int axis = 0; axis < 3; ++axis) {
+                    entry = std::max(entry, (bounds[near_[axis]][i] - origin_entry_[axis][i % 4]) * inv_[axis][i % 4]);
+                    exit = std::min(exit, (bounds[far_[axis]][i] - origin_exit_[axis][i % 4]) * inv_[axis][i % 4]);
+                }
+                t_entry[i] = entry;
+                if (entry <= exit) mask |= 1u << i;
+            }
+#endif
         }
         return mask;
-#endif
     }
 
   private:
