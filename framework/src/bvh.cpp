@@ -183,21 +183,33 @@ struct Builder {
     }
 
     // Puts the primitive with the median centre along `axis` at position first + count / 2,
-    // those below it before and those above after (as std::nth_element would), with their boxes and costs.
+    // those below it before and those above after (as std::nth_element would), with their
+    // boxes and costs: the positions are chosen first, then everything moves along the
+    // permutation's cycles, so no copy of the boxes is made.
     void split_at_median(std::uint32_t first, std::uint32_t count, int axis) {
         std::vector<std::uint32_t> from(count);
         std::iota(from.begin(), from.end(), first);
         std::nth_element(from.begin(), from.begin() + count / 2, from.end(),
                          [&](std::uint32_t a, std::uint32_t b) { return center(a, axis) < center(b, axis); });
-        auto gather = [&](auto* items) {
-            using Item = std::remove_reference_t<decltype(items[0])>;
-            std::vector<Item> moved(count);
-            for (std::uint32_t k = 0; k < count; ++k) moved[k] = items[from[k]];
-            std::copy(moved.begin(), moved.end(), items + first);
-        };
-        gather(order.data());
-        gather(boxes.data());
-        if (!test_costs.empty()) gather(test_costs.data());
+        for (std::uint32_t start = 0; start < count; ++start) {
+            if (from[start] == first + start) continue; // in place, or moved already
+            const std::uint32_t saved_order = order[first + start];
+            const Aabb saved_box = boxes[first + start];
+            const float saved_cost = test_costs.empty() ? 0.0f : test_costs[first + start];
+            std::uint32_t k = start;
+            while (from[k] != first + start) {
+                const std::uint32_t source = from[k];
+                order[first + k] = order[source];
+                boxes[first + k] = boxes[source];
+                if (!test_costs.empty()) test_costs[first + k] = test_costs[source];
+                from[k] = first + k; // done
+                k = source - first;
+            }
+            order[first + k] = saved_order;
+            boxes[first + k] = saved_box;
+            if (!test_costs.empty()) test_costs[first + k] = saved_cost;
+            from[k] = first + k;
+        }
     }
 
     void make_leaf(std::uint32_t index, std::uint32_t first, std::uint32_t count) {
@@ -205,9 +217,6 @@ struct Builder {
         nodes[index].count = static_cast<std::uint16_t>(count);
     }
 
-    // Partitions by the cheapest bin boundary and returns the split position with
-    // the bounds of both sides; kLeaf when a leaf is cheaper than any split (which
-    // costs `setup_cost` node tests more than a leaf), kMedian when no boundary separates.
     // Adds the primitives at positions [begin, end) of the node starting at `first` to
     // the bins of their centres along `axis`, noting each one's bin in bin_ids.
     void fill_bins(std::uint32_t first, std::uint32_t begin, std::uint32_t end, int axis, double lo, double scale,
@@ -224,8 +233,10 @@ struct Builder {
         }
     }
 
+    // Partitions by the cheapest bin boundary and returns the split position with the
+    // bounds of both sides; kLeaf when a leaf is cheaper than any split (with test costs,
+    // splitting the root also costs each ray its set-up), kMedian when no boundary separates.
     Split sah_split(std::uint32_t first, std::uint32_t count, int axis, const RangeBounds& range, int depth) {
-        // With test costs, the root's split also costs each ray its set-up.
         const double setup_cost = depth == 0 && !test_costs.empty() ? kRaySetupCost : 0.0;
         Bins bins{};
         const double lo = range.centers.min[axis];
@@ -289,6 +300,10 @@ struct Builder {
 Bvh::Bvh(std::vector<Aabb> boxes, std::vector<float> test_costs, Threads threads) {
     if (!test_costs.empty() && test_costs.size() != boxes.size())
         throw std::invalid_argument("Bvh: " + std::to_string(test_costs.size()) + " test costs for " + std::to_string(boxes.size()) + " boxes");
+    // Sums of halves are exact in any order, so bins filled by two threads match one thread's.
+    for (const float cost : test_costs)
+        if (!(cost >= 0.0f && cost <= 1024.0f && std::floor(2.0f * cost) == 2.0f * cost))
+            throw std::invalid_argument("Bvh: a test cost of " + std::to_string(cost) + " (expected a multiple of 1/2 in [0, 1024])");
     order_.resize(boxes.size());
     std::iota(order_.begin(), order_.end(), 0u);
     if (boxes.empty()) return;

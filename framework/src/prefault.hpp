@@ -34,7 +34,8 @@ inline void prefault(void* begin, std::size_t bytes) {
 }
 
 /// prefault() on another thread, while this one goes on writing from the front;
-/// the block must outlive the returned future (keep it declared after the block's owner).
+/// the block must outlive the returned future (declare it after the block's owner, and
+/// wait for it before the block can move).
 inline std::future<void> prefault_behind(void* begin, std::size_t bytes) {
     if (bytes < (std::size_t{1} << 20)) return {};
     try {

@@ -46,9 +46,9 @@ void permute_in_place(std::vector<Primitive>& items, std::span<const std::uint32
     }
 }
 
-// What testing a ray against the shape costs the reference renderer, in four-box
-// node tests (measured leads of issue 17): the SAH weighs leaves with it, so
-// cheap spheres share leaves and costly cones get boxes of their own.
+// What testing a ray against the shape costs the reference renderer, in node tests
+// (measured leads of issue 17): the SAH weighs leaves with it, so cheap spheres
+// share leaves and costly cones get boxes of their own.
 float test_cost(const Shape& shape) {
     if (std::holds_alternative<Sphere>(shape)) return 1.0f;
     if (std::holds_alternative<Triangle>(shape)) return 1.5f;

@@ -187,6 +187,8 @@ void SceneBuilder::add_shape(const Token& at, const Shape& shape, std::int32_t v
     primitive.material = static_cast<std::uint32_t>(data().materials.size() - 1);
     primitive.vertex_normals = vertex_normals;
     primitive.line = static_cast<std::uint32_t>(at.line);
+    // A full list moves to a bigger block and frees this one: the pages being mapped in first.
+    if (data().primitives.size() == data().primitives.capacity() && prefaulted_.valid()) prefaulted_.get();
     data().primitives.push_back(primitive);
 }
 

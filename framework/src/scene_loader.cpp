@@ -52,6 +52,8 @@ LoadedScene load_scene(const std::filesystem::path& path, const SceneLimits& lim
     }
     char buffer[1 << 16];
     while (file.read(buffer, sizeof buffer) || file.gcount() > 0) {
+        // A file that grew since its size was read moves the text to a bigger block: the pages being mapped in first.
+        if (text.size() + static_cast<std::size_t>(file.gcount()) > text.capacity() && prefaulted.valid()) prefaulted.get();
         text.append(buffer, static_cast<std::size_t>(file.gcount()));
         if (text.size() > limits.max_file_bytes) break; // it grew since: parse_scene says so
     }

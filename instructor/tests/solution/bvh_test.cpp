@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 
 using namespace whitted;
@@ -135,16 +136,29 @@ std::uint32_t largest_leaf(const Bvh& bvh) {
 
 } // namespace
 
-// Three unit boxes 10 apart. Root box: 21 x 1 x 1, half area 21 + 1 + 21 = 43.
-// A leaf costs 43 x 3 = 129 tests. The best split (one box | two: half areas 3 and
-// 11 + 1 + 11 = 23) costs the node test plus each side's area times its tests:
-// 43 + 3 x 1 + 23 x 2 = 92 < 129, so without the rays' set-up (4 node tests,
-// 4 x 43 = 172 more) the SAH would split; with it the split costs 264 and the root
-// stays one leaf, so rays walk no tree.
+// Three unit boxes 10 apart, triangles (1.5 tests each: 4.5, more than the four a
+// small node may cost before the SAH weighs it). Root box: 21 x 1 x 1, half area
+// 21 + 1 + 21 = 43. A leaf costs 43 x 4.5 = 193.5 tests. The best split (one box |
+// two: half areas 3 and 11 + 1 + 11 = 23) costs the node test plus each side's area
+// times its tests: 43 + 3 x 1.5 + 23 x 3 = 116.5 < 193.5, so without the rays' set-up
+// (4 node tests, 4 x 43 = 172 more) the SAH would split; with it the split costs
+// 288.5 and the root stays one leaf, so rays walk no tree.
 TEST(Bvh, WithTestCostsAFewShapesAreOneLeaf) {
-    const Bvh bvh({box_at(0.0), box_at(10.0), box_at(20.0)}, {1.0f, 1.0f, 1.0f});
+    const Bvh bvh({box_at(0.0), box_at(10.0), box_at(20.0)}, {1.5f, 1.5f, 1.5f});
     ASSERT_EQ(bvh.nodes().size(), 1u);
     EXPECT_EQ(bvh.nodes()[0].count, 3u);
+}
+
+// Five unit boxes 2 apart (x in [2k, 2k + 1]). Root: 9 x 1 x 1, half area 19. With
+// every test costing c, a leaf costs 19 x 5c = 95c; the split {0, 1} | {2, 3, 4}
+// (half areas 7 and 11) costs the node test and the rays' set-up, 5 x 19 = 95, plus
+// 7 x 2c + 11 x 3c = 47c. Spheres (c = 1): every split costs over 95, the leaf 95, so
+// one leaf. Cones (c = 3): 236 < 285, so split: the costs, not the counts, decide.
+TEST(Bvh, TestCostsDecideBetweenLeafAndSplit) {
+    std::vector<Aabb> boxes;
+    for (int k = 0; k < 5; ++k) boxes.push_back(box_at(2.0 * k));
+    EXPECT_EQ(Bvh(boxes, std::vector<float>(5, 1.0f)).nodes().size(), 1u);
+    EXPECT_GT(Bvh(boxes, std::vector<float>(5, 3.0f)).nodes().size(), 1u);
 }
 
 // Two clusters, 1000 apart, of four unit boxes 10 apart. Within a cluster (31 x 1 x 1,
@@ -160,6 +174,33 @@ TEST(Bvh, WithTestCostsTrianglesFarApartGetSmallerLeaves) {
     EXPECT_LT(largest_leaf(Bvh(boxes, std::vector<float>(8, 1.5f))), 4u);
 }
 
-TEST(Bvh, TestCostsAreOnePerBox) {
+TEST(Bvh, TestCostsAreOnePerBoxAndHalves) {
     EXPECT_THROW(Bvh({box_at(0.0), box_at(2.0)}, {1.0f}), std::invalid_argument);
+    EXPECT_THROW(Bvh({box_at(0.0), box_at(2.0)}, {1.0f, 1.25f}), std::invalid_argument);
+    EXPECT_THROW(Bvh({box_at(0.0), box_at(2.0)}, {1.0f, -1.0f}), std::invalid_argument);
+    EXPECT_THROW(Bvh({box_at(0.0), box_at(2.0)}, {1.0f, std::numeric_limits<float>::quiet_NaN()}), std::invalid_argument);
+}
+
+// 5,000 points spread over less than 2^-1040 along x: the SAH's bins cannot tell
+// them apart (16 over a subnormal spread overflows), so every node splits at the
+// median centre, which moves the primitives around. Each leaf's box must be the
+// box of the very points its primitives are: the boxes move with `order` (with
+// test costs, the costs too).
+TEST(Bvh, MedianSplitsKeepEachBoxWithItsPrimitive) {
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 5'000; ++i) {
+        const Point3 p(std::ldexp(static_cast<double>((i * 7919) % 5'000), -1060), 0.0, 0.0); // shuffled
+        boxes.push_back(Aabb{p, p});
+    }
+    for (const std::vector<float>& costs : {std::vector<float>{}, std::vector<float>(boxes.size(), 1.5f)}) {
+        const Bvh bvh(boxes, costs);
+        ASSERT_GT(bvh.nodes().size(), 1000u);
+        for (const Bvh::Node& node : bvh.nodes()) {
+            if (node.count == 0) continue;
+            Aabb held;
+            for (std::uint32_t i = node.first; i < node.first + node.count; ++i) held.expand(boxes[bvh.order()[i]]);
+            ASSERT_TRUE(held.min == node.bounds.min && held.max == node.bounds.max)
+                << "leaf at " << node.first << (costs.empty() ? "" : " with test costs");
+        }
+    }
 }

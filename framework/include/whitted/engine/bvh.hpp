@@ -28,12 +28,10 @@ class Bvh {
 
     Bvh() = default;
 
-    /// Builds the hierarchy over the boxes (taken to be reordered as the build
-    /// goes). Afterwards `order()[i]` is the index (into `boxes`) of the
-    /// primitive that belongs at position i. With `test_costs` (each primitive's
-    /// intersection test, in node tests) the SAH alone decides where the leaves
-    /// stop; without, every primitive costs one and every node of at most four
-    /// primitives is a leaf.
+    /// Builds the hierarchy over the boxes, after which `order()[i]` is the index
+    /// (into `boxes`) of the primitive at position i; `test_costs` (each primitive's
+    /// test in node tests, multiples of 1/2) let the SAH split nodes of up to four
+    /// primitives that cost more than four, which are leaves without them.
     explicit Bvh(std::vector<Aabb> boxes, std::vector<float> test_costs = {}, Threads threads = Threads::several);
 
     std::span<const std::uint32_t> order() const { return order_; }
