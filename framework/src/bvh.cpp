@@ -1,6 +1,8 @@
 // Binned surface-area-heuristic BVH construction.
 #include "whitted/engine/bvh.hpp"
 
+#include "permute.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -81,7 +83,7 @@ struct Builder {
     // The centre along one axis of the box at position i, as Aabb::center() computes it (read from the box, not stored: less memory to fill).
     double center(std::uint32_t i, int axis) const { return 0.5 * (boxes[i].min[axis] + boxes[i].max[axis]); }
 
-    // The test costs of order[first, first + count).
+    // The test costs of the primitives at positions [first, first + count).
     double tests_of(std::uint32_t first, std::uint32_t count) const {
         double sum = 0.0;
         for (std::uint32_t i = first; i < first + count; ++i) sum += test_costs[i];
@@ -183,33 +185,17 @@ struct Builder {
     }
 
     // Puts the primitive with the median centre along `axis` at position first + count / 2,
-    // those below it before and those above after (as std::nth_element would), with their
-    // boxes and costs: the positions are chosen first, then everything moves along the
-    // permutation's cycles, so no copy of the boxes is made.
+    // those below it before and those above after (as std::nth_element would), with
+    // their boxes and costs: the new order is chosen first, then each array follows it.
     void split_at_median(std::uint32_t first, std::uint32_t count, int axis) {
-        std::vector<std::uint32_t> from(count);
-        std::iota(from.begin(), from.end(), first);
-        std::nth_element(from.begin(), from.begin() + count / 2, from.end(),
-                         [&](std::uint32_t a, std::uint32_t b) { return center(a, axis) < center(b, axis); });
-        for (std::uint32_t start = 0; start < count; ++start) {
-            if (from[start] == first + start) continue; // in place, or moved already
-            const std::uint32_t saved_order = order[first + start];
-            const Aabb saved_box = boxes[first + start];
-            const float saved_cost = test_costs.empty() ? 0.0f : test_costs[first + start];
-            std::uint32_t k = start;
-            while (from[k] != first + start) {
-                const std::uint32_t source = from[k];
-                order[first + k] = order[source];
-                boxes[first + k] = boxes[source];
-                if (!test_costs.empty()) test_costs[first + k] = test_costs[source];
-                from[k] = first + k; // done
-                k = source - first;
-            }
-            order[first + k] = saved_order;
-            boxes[first + k] = saved_box;
-            if (!test_costs.empty()) test_costs[first + k] = saved_cost;
-            from[k] = first + k;
-        }
+        std::vector<std::uint32_t> from(count); // counted from `first`
+        std::iota(from.begin(), from.end(), 0u);
+        std::nth_element(from.begin(), from.begin() + count / 2, from.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return center(first + a, axis) < center(first + b, axis);
+        });
+        detail::permute_in_place(std::span(order).subspan(first, count), from);
+        detail::permute_in_place(boxes.subspan(first, count), from);
+        if (!test_costs.empty()) detail::permute_in_place(test_costs.subspan(first, count), from);
     }
 
     void make_leaf(std::uint32_t index, std::uint32_t first, std::uint32_t count) {

@@ -7,6 +7,7 @@
 #include "whitted/engine/wide_bvh.hpp"
 #include "whitted/labs.hpp"
 
+#include "permute.hpp"
 #include "prefault.hpp"
 
 #include <atomic>
@@ -26,24 +27,6 @@ std::uint64_t next_serial() {
     // Only an identity for scenes: the one counter the framework shares between threads.
     static std::atomic<std::uint64_t> counter{0};
     return ++counter;
-}
-
-// Rearranges `items` so that items[k] becomes what items[from[k]] was (`from` is a
-// permutation), following each cycle of it: every item moves once, and no copy is made.
-void permute_in_place(std::vector<Primitive>& items, std::span<const std::uint32_t> from) {
-    std::vector<bool> placed(items.size());
-    for (std::size_t start = 0; start < items.size(); ++start) {
-        if (placed[start]) continue;
-        Primitive first = std::move(items[start]);
-        std::size_t k = start;
-        while (from[k] != start) {
-            items[k] = std::move(items[from[k]]);
-            placed[k] = true;
-            k = from[k];
-        }
-        items[k] = std::move(first);
-        placed[k] = true;
-    }
 }
 
 // What testing a ray against the shape costs the reference renderer, in node tests
@@ -122,7 +105,7 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
     for (std::uint32_t index : binary.order()) source_index_.push_back(bounded_index[index]);
     source_index_.insert(source_index_.end(), unbounded_index.begin(), unbounded_index.end());
     // Moved into that order where they are: a big scene's primitives are not copied.
-    permute_in_place(data_.primitives, source_index_);
+    detail::permute_in_place(std::span<Primitive>(data_.primitives), source_index_);
     for (std::size_t i = 0; i < count; ++i) data_.primitives[i].index = static_cast<std::uint32_t>(i);
     bvh_ = collapsed.valid() ? collapsed.get() : collapse();
     if (data_.acceleration == Acceleration::grid)

@@ -5,11 +5,12 @@
 // side lets two 4-wide float tests decide them all, and float boxes make a node
 // 256 bytes, four cache lines. A ray's walk waits on each node it fetches, so
 // fewer, wider nodes beat four-wide ones (issue 17: the sphereflakes 6-7 % and a
-// triangle soup 13 % faster, teapot6 2 %, mount6 and tetra6 level). Float must never lose a hit the double
-// primitive tests would find, so every box test is conservative: boxes are
-// rounded outward, and each ray widens its slabs by a margin larger than every
-// rounding error of the test (see WideRay). The hits themselves are still found
-// by the primitives' double-precision tests, so images do not change.
+// triangle soup 13 % faster, teapot6 2 %, mount6 and tetra6 level). Float must
+// never lose a hit the double primitive tests would find, so every box test is
+// conservative: boxes are rounded outward, and each ray widens its slabs by a
+// margin larger than every rounding error of the test (see WideRay). The hits
+// themselves are still found by the primitives' double-precision tests, so
+// images do not change.
 //
 // The tree is collapsed from the binary SAH tree of `Bvh` (whose primitive
 // order it keeps): each node adopts the children of its largest inner children
