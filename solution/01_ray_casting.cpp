@@ -66,28 +66,38 @@ std::optional<TriangleDistance> triangle_distance(const Ray& ray, const Triangle
 
 // The hits, built from the distances.
 
+Hit sphere_hit(const Ray& ray, const Sphere& sphere, double t) {
+    Vec3 outward = (ray.at(t) - sphere.center) / sphere.radius;
+    if (sphere.inward) outward = -outward;
+    return make_hit(ray, t, outward);
+}
+
+Hit plane_hit(const Ray& ray, const Plane& plane, double t) { return make_hit(ray, t, plane.normal); }
+
+Hit triangle_hit(const Ray& ray, const Triangle& triangle, const TriangleDistance& found) {
+    const Vec3 e1 = triangle.p1 - triangle.p0;
+    const Vec3 e2 = triangle.p2 - triangle.p0;
+    Hit hit = make_hit(ray, found.t, glm::normalize(glm::cross(e1, e2)));
+    hit.uv = Vec2(found.b1, found.b2);
+    return hit;
+}
+
 std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range) {
     const std::optional<double> t = sphere_distance(ray, sphere, t_range);
     if (!t) return std::nullopt;
-    Vec3 outward = (ray.at(*t) - sphere.center) / sphere.radius;
-    if (sphere.inward) outward = -outward;
-    return make_hit(ray, *t, outward);
+    return sphere_hit(ray, sphere, *t);
 }
 
 std::optional<Hit> intersect_plane(const Ray& ray, const Plane& plane, Interval t_range) {
     const std::optional<double> t = plane_distance(ray, plane, t_range);
     if (!t) return std::nullopt;
-    return make_hit(ray, *t, plane.normal);
+    return plane_hit(ray, plane, *t);
 }
 
 std::optional<Hit> intersect_triangle(const Ray& ray, const Triangle& triangle, Interval t_range) {
     const std::optional<TriangleDistance> found = triangle_distance(ray, triangle, t_range);
     if (!found) return std::nullopt;
-    const Vec3 e1 = triangle.p1 - triangle.p0;
-    const Vec3 e2 = triangle.p2 - triangle.p0;
-    Hit hit = make_hit(ray, found->t, glm::normalize(glm::cross(e1, e2)));
-    hit.uv = Vec2(found->b1, found->b2);
-    return hit;
+    return triangle_hit(ray, triangle, *found);
 }
 
 std::optional<Hit> closest_hit(const Ray& ray, std::span<const Primitive> primitives, Interval t_range) {

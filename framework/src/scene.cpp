@@ -11,6 +11,7 @@
 #include "prefault.hpp"
 
 #include <atomic>
+#include <cmath>
 #include <future>
 #include <mutex>
 #include <stdexcept>
@@ -169,9 +170,16 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
         if (nearest) apply_vertex_normals(*nearest, ray);
         return nearest;
     }
+    // At equal distances the lower index wins, in whatever order the leaves come
+    // (as in the reference leaf kernels, whose packets of rays walk them in
+    // another order than a ray alone); a plane, tested first, wins over them all.
+    bool in_bvh = false;
     bvh_->traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
-        if (auto hit = whitted::closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max})) {
+        const bool lower = in_bvh && first < nearest->primitive; // leaves hold consecutive indices
+        const Interval range{t_range.min, lower ? std::nextafter(t_max, kInfinity) : t_max};
+        if (auto hit = whitted::closest_hit(ray, all.subspan(first, count), range)) {
             nearest = hit;
+            in_bvh = true;
             return hit->t;
         }
         return t_max;
@@ -180,12 +188,10 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     return nearest;
 }
 
-// The same search with the leaf kernels: distances only, then one Hit for the nearest.
+// The same search with the leaf kernels: distances only, and one Hit for the nearest.
 std::optional<Hit> Scene::closest_hit_with_kernels(const Ray& ray, Interval t_range) const {
     const SceneView view{data_.primitives, bounded_count_, *bvh_};
-    const std::optional<std::uint32_t> nearest = kernels_->closest(view, ray, t_range);
-    if (!nearest) return std::nullopt;
-    std::optional<Hit> hit = intersect(ray, data_.primitives[*nearest], t_range);
+    std::optional<Hit> hit = kernels_->closest(view, ray, t_range);
     if (hit) apply_vertex_normals(*hit, ray);
     return hit;
 }
@@ -253,6 +259,48 @@ QueryCost Scene::query_cost(const Ray& ray, Interval t_range, bool any_hit) cons
     }
     cost.box_tests = nodes * WideBvh::kWidth;
     return cost;
+}
+
+namespace {
+
+// Calls packet(first, count) for consecutive packets of at most RayPacket::kMaxRays of `size` rays.
+template <class PacketFn>
+void for_each_packet(std::size_t size, PacketFn&& packet) {
+    for (std::size_t first = 0; first < size; first += RayPacket::kMaxRays)
+        packet(first, std::min<std::size_t>(RayPacket::kMaxRays, size - first));
+}
+
+} // namespace
+
+bool Scene::queries_packets() const {
+    // A BVH of one leaf has no boxes for a packet to share.
+    return kernels_ && kernels_->closest_packet && data_.acceleration != Acceleration::none && !grid_ &&
+           !bvh_->nodes().empty();
+}
+
+void Scene::closest_hits(std::span<const Ray> rays, std::span<const Interval> t_ranges,
+                         std::span<std::optional<Hit>> hits) const {
+    if (!queries_packets()) {
+        for (std::size_t i = 0; i < rays.size(); ++i) hits[i] = closest_hit(rays[i], t_ranges[i]);
+        return;
+    }
+    const SceneView view{data_.primitives, bounded_count_, *bvh_};
+    for_each_packet(rays.size(), [&](std::size_t first, std::size_t count) {
+        kernels_->closest_packet(view, rays.subspan(first, count), t_ranges.subspan(first, count), hits.subspan(first, count));
+    });
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        if (hits[i]) apply_vertex_normals(*hits[i], rays[i]);
+}
+
+void Scene::occluded_rays(std::span<const Ray> rays, std::span<const Interval> t_ranges, std::span<bool> blocked) const {
+    if (!queries_packets()) {
+        for (std::size_t i = 0; i < rays.size(); ++i) blocked[i] = occluded(rays[i], t_ranges[i]);
+        return;
+    }
+    const SceneView view{data_.primitives, bounded_count_, *bvh_};
+    for_each_packet(rays.size(), [&](std::size_t first, std::size_t count) {
+        kernels_->occluded_packet(view, rays.subspan(first, count), t_ranges.subspan(first, count), blocked.subspan(first, count));
+    });
 }
 
 bool Scene::occluded_with_kernels(const Ray& ray, Interval t_range) const {

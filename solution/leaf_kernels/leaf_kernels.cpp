@@ -19,13 +19,16 @@ namespace {
 // ranges are open, so even an infinite maximum excludes it).
 constexpr double kMiss = std::numeric_limits<double>::infinity();
 
-// The distance of the ray's hit with the primitive inside t_range, or kMiss.
-inline double distance(const Ray& ray, const Primitive& primitive, Interval t_range) {
+// The distance of the ray's hit with the primitive inside t_range, or kMiss;
+// for a triangle, also where on it (`on_triangle`), to build its hit from later.
+inline double distance(const Ray& ray, const Primitive& primitive, Interval t_range, TriangleDistance& on_triangle) {
     const Shape& shape = primitive.shape;
     if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere_distance(ray, *sphere, t_range).value_or(kMiss);
     if (const auto* triangle = std::get_if<Triangle>(&shape)) {
         const std::optional<TriangleDistance> found = triangle_distance(ray, *triangle, t_range);
-        return found ? found->t : kMiss;
+        if (!found) return kMiss;
+        on_triangle = *found;
+        return found->t;
     }
     if (const auto* plane = std::get_if<Plane>(&shape)) return plane_distance(ray, *plane, t_range).value_or(kMiss);
     const std::optional<Hit> hit = std::holds_alternative<Box>(shape) ? intersect_box(ray, std::get<Box>(shape), t_range)
@@ -33,28 +36,82 @@ inline double distance(const Ray& ray, const Primitive& primitive, Interval t_ra
     return hit ? hit->t : kMiss;
 }
 
-// The scene's closest-hit query: planes first (a hit there shortens the range
-// the BVH must search), then the BVH, leaves tested in order.
-std::optional<std::uint32_t> closest(const SceneView& scene, const Ray& ray, Interval t_range) {
-    std::optional<std::uint32_t> nearest;
-    for (std::size_t i = scene.bounded_count; i < scene.primitives.size(); ++i) {
-        if (const double t = distance(ray, scene.primitives[i], t_range); t != kMiss) {
-            t_range.max = t;
-            nearest = static_cast<std::uint32_t>(i);
+inline double distance(const Ray& ray, const Primitive& primitive, Interval t_range) {
+    TriangleDistance unused;
+    return distance(ray, primitive, t_range, unused);
+}
+
+// The hit the labs' intersect() returns for the primitive found at distance t
+// (`on_triangle` where a triangle was met), without testing it again.
+std::optional<Hit> hit_at(const Ray& ray, const Primitive& primitive, double t, const TriangleDistance& on_triangle, Interval t_range) {
+    const Shape& shape = primitive.shape;
+    Hit hit;
+    if (const auto* sphere = std::get_if<Sphere>(&shape)) hit = sphere_hit(ray, *sphere, t);
+    else if (const auto* triangle = std::get_if<Triangle>(&shape)) hit = triangle_hit(ray, *triangle, on_triangle);
+    else if (const auto* plane = std::get_if<Plane>(&shape)) hit = plane_hit(ray, *plane, t);
+    else return intersect(ray, primitive, t_range); // boxes and cones: the framework's own test, once more
+    hit.primitive = primitive.index;
+    hit.material = primitive.material;
+    return hit;
+}
+
+// One ray's nearest hit so far: which primitive, how far, where on a triangle.
+struct Nearest {
+    double t;                          // the search's upper end until something is found
+    std::uint32_t index = kNoPrimitive; // kNoPrimitive: nothing yet, or an infinite plane
+    bool found = false;
+    TriangleDistance on_triangle{};
+
+    static constexpr std::uint32_t kNoPrimitive = 0xffffffffu;
+
+    // Tests primitive i of the BVH. At equal distances the lower index wins,
+    // whatever order the leaves come in (a ray alone and a packet of rays walk
+    // them in different orders, and must agree), and a plane, tested first, wins
+    // over any primitive of the BVH.
+    void test(const Ray& ray, const Primitive& primitive, std::uint32_t i, double t_min) {
+        const double limit = index != kNoPrimitive && i < index ? std::nextafter(t, kMiss) : t;
+        TriangleDistance candidate;
+        if (const double hit_t = distance(ray, primitive, Interval{t_min, limit}, candidate); hit_t != kMiss) {
+            t = hit_t;
+            index = i;
+            found = true;
+            on_triangle = candidate;
         }
     }
-    scene.bvh.traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
-        const Interval leaf_range{t_range.min, t_max};
-        double nearest_t = t_max;
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            if (const double t = distance(ray, scene.primitives[i], Interval{leaf_range.min, nearest_t}); t != kMiss) {
-                nearest_t = t;
-                nearest = i;
-            }
+};
+
+// The infinite planes, which the BVH does not hold: tested first, so that a hit
+// there shortens the range the BVH must search.
+Nearest nearest_plane(const SceneView& scene, const Ray& ray, Interval t_range, std::uint32_t& plane) {
+    Nearest nearest{t_range.max};
+    TriangleDistance unused;
+    for (std::size_t i = scene.bounded_count; i < scene.primitives.size(); ++i) {
+        if (const double t = distance(ray, scene.primitives[i], Interval{t_range.min, nearest.t}, unused); t != kMiss) {
+            nearest.t = t;
+            nearest.found = true;
+            plane = static_cast<std::uint32_t>(i);
         }
-        return nearest_t;
-    });
+    }
     return nearest;
+}
+
+// The hit the search found, built once.
+std::optional<Hit> nearest_hit(const SceneView& scene, const Ray& ray, const Nearest& nearest, std::uint32_t plane,
+                               Interval t_range) {
+    if (!nearest.found) return std::nullopt;
+    const std::uint32_t i = nearest.index != Nearest::kNoPrimitive ? nearest.index : plane;
+    return hit_at(ray, scene.primitives[i], nearest.t, nearest.on_triangle, t_range);
+}
+
+// The scene's closest-hit query: planes first, then the BVH, nearer boxes first.
+std::optional<Hit> closest(const SceneView& scene, const Ray& ray, Interval t_range) {
+    std::uint32_t plane = 0;
+    Nearest nearest = nearest_plane(scene, ray, t_range, plane);
+    scene.bvh.traverse(ray, t_range.min, nearest.t, [&](std::uint32_t first, std::uint32_t count, double) {
+        for (std::uint32_t i = first; i < first + count; ++i) nearest.test(ray, scene.primitives[i], i, t_range.min);
+        return nearest.t;
+    });
+    return nearest_hit(scene, ray, nearest, plane, t_range);
 }
 
 // The scene's occlusion query: any hit will do, so the first one ends it.
@@ -74,7 +131,67 @@ bool occluded(const SceneView& scene, const Ray& ray, Interval t_range) {
     return blocked;
 }
 
-constexpr LeafKernels kReferenceKernels{closest, occluded};
+// closest() for a packet of rays: the same planes, the same leaves for each
+// ray that may meet them, and the same rule at equal distances, so the same hits.
+void closest_packet(const SceneView& scene, std::span<const Ray> rays, std::span<const Interval> t_ranges,
+                    std::span<std::optional<Hit>> hits) {
+    RayPacket packet(rays, t_ranges, scene.bvh.extent());
+    if (!packet.coherent()) {
+        for (std::size_t r = 0; r < rays.size(); ++r) hits[r] = closest(scene, rays[r], t_ranges[r]);
+        return;
+    }
+    Nearest nearest[RayPacket::kMaxRays];
+    std::uint32_t plane[RayPacket::kMaxRays];
+    for (std::size_t r = 0; r < rays.size(); ++r) {
+        nearest[r] = nearest_plane(scene, rays[r], t_ranges[r], plane[r]);
+        if (nearest[r].found) packet.shrink(static_cast<int>(r), nearest[r].t);
+    }
+    packet.refresh_t_max();
+    scene.bvh.traverse_packet(packet, [&](std::uint32_t first, std::uint32_t count, unsigned which) {
+        for (; which != 0; which &= which - 1) {
+            const int r = __builtin_ctz(which);
+            const double before = nearest[r].t;
+            for (std::uint32_t i = first; i < first + count; ++i) nearest[r].test(rays[r], scene.primitives[i], i, t_ranges[r].min);
+            if (nearest[r].t != before) packet.shrink(r, nearest[r].t);
+        }
+        packet.refresh_t_max();
+    });
+    for (std::size_t r = 0; r < rays.size(); ++r) hits[r] = nearest_hit(scene, rays[r], nearest[r], plane[r], t_ranges[r]);
+}
+
+// occluded() for a packet of rays: a ray leaves the walk at its first blocker.
+void occluded_packet(const SceneView& scene, std::span<const Ray> rays, std::span<const Interval> t_ranges,
+                     std::span<bool> blocked) {
+    RayPacket packet(rays, t_ranges, scene.bvh.extent());
+    if (!packet.coherent()) {
+        for (std::size_t r = 0; r < rays.size(); ++r) blocked[r] = occluded(scene, rays[r], t_ranges[r]);
+        return;
+    }
+    unsigned done = 0;
+    for (std::size_t r = 0; r < rays.size(); ++r) {
+        blocked[r] = false;
+        for (std::size_t i = scene.bounded_count; i < scene.primitives.size() && !blocked[r]; ++i)
+            blocked[r] = distance(rays[r], scene.primitives[i], t_ranges[r]) != kMiss;
+        if (blocked[r]) done |= 1u << r;
+    }
+    if (done != 0) packet.retire(done);
+    scene.bvh.traverse_packet<false>(packet, [&](std::uint32_t first, std::uint32_t count, unsigned which) {
+        unsigned found = 0;
+        for (; which != 0; which &= which - 1) {
+            const int r = __builtin_ctz(which);
+            for (std::uint32_t i = first; i < first + count; ++i) {
+                if (distance(rays[r], scene.primitives[i], t_ranges[r]) != kMiss) {
+                    blocked[r] = true;
+                    found |= 1u << r;
+                    break;
+                }
+            }
+        }
+        if (found != 0) packet.retire(found);
+    });
+}
+
+constexpr LeafKernels kReferenceKernels{closest, occluded, closest_packet, occluded_packet};
 
 } // namespace
 

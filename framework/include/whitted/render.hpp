@@ -36,4 +36,12 @@ using PixelFunction = std::function<Color(double x, double y)>;
 RenderResult render_pixels(const Camera& camera, int threads, const ProgressCallback& progress,
                            const std::function<PixelFunction(RayStats& stats)>& make_pixel_function);
 
+/// The colours of the pixels whose centres are at positions[i], into colors[i].
+using BlockFunction = std::function<void(std::span<const Vec2> positions, std::span<Color> colors)>;
+
+/// render_pixels() for computations that do a block of neighbouring pixels
+/// (at most 4 x 4) at once: the same pixels, in the same tiles.
+RenderResult render_blocks(const Camera& camera, int threads, const ProgressCallback& progress,
+                           const std::function<BlockFunction(RayStats& stats)>& make_block_function);
+
 } // namespace whitted

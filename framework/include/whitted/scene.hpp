@@ -114,6 +114,19 @@ class Scene {
     /// True when any surface lies along the ray with t inside t_range.
     bool occluded(const Ray& ray, Interval t_range) const;
 
+    /// closest_hit() for each of several rays (hits[i] for rays[i] within
+    /// t_ranges[i]): the very same answers, found faster when the rays travel
+    /// together, as the eye rays of neighbouring pixels do.
+    void closest_hits(std::span<const Ray> rays, std::span<const Interval> t_ranges,
+                      std::span<std::optional<Hit>> hits) const;
+
+    /// occluded() for each of several rays (blocked[i] for rays[i] within t_ranges[i]).
+    void occluded_rays(std::span<const Ray> rays, std::span<const Interval> t_ranges, std::span<bool> blocked) const;
+
+    /// True when closest_hits() and occluded_rays() walk the BVH with packets
+    /// of rays (the reference renderer's leaf kernels); else they ask one ray at a time.
+    bool queries_packets() const;
+
     /// Runs closest_hit (or, when `any_hit`, occluded) through the labs' code
     /// and counts its intersection tests.
     QueryCost query_cost(const Ray& ray, Interval t_range, bool any_hit) const;

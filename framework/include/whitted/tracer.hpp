@@ -86,6 +86,12 @@ class Tracer {
     /// contains (x, y). Whitted ray tracing calls it with each pixel's centre.
     Color trace_pixel(double x, double y) const;
 
+    /// trace_pixel() for each of several viewport positions (colors[i] for
+    /// positions[i]), bit for bit: with a scene that walks packets of rays, the
+    /// pixels' eye rays go together, and so do the shadow feelers from their
+    /// hits towards each light. The render loop calls it for 4 x 4 pixel blocks.
+    void trace_pixels(std::span<const Vec2> positions, std::span<Color> colors) const;
+
     /// The colour of one sample of a pixel, seen through viewport position (x, y)
     /// inside that pixel: like trace_pixel, and the sample's random numbers (for
     /// the lens, the lights) are those of `sample`.

@@ -3,6 +3,7 @@
 // and render the very same image, bit for bit.
 #include "whitted/labs.hpp"
 #include "whitted/engine/leaf_kernels.hpp"
+#include "whitted/engine/ray_packet.hpp"
 #include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
@@ -227,4 +228,92 @@ TEST(FastPath, RaysGrazingFarAwayBoxesFromNearTheOriginStillHitThem) {
         hits += expected.has_value();
     }
     EXPECT_GT(hits, 1900);
+}
+
+namespace {
+
+// Sixteen rays as a packet would take them: from one point (a pinhole's eye
+// rays through a 4 x 4 block of pixels), or from sixteen nearby points towards
+// one (shadow feelers towards a light), `spread` wide; some bundles straddle an
+// axis, so their direction signs differ and they go one by one.
+std::vector<Ray> bundle(std::mt19937& rng, Vec3 offset, double scale, bool feelers, double spread) {
+    std::uniform_real_distribution<double> position(-15.0, 15.0), unit(-1.0, 1.0);
+    const Point3 from = offset + scale * Point3(position(rng), position(rng), position(rng));
+    const Point3 to = offset + scale * Point3(0.3 * position(rng), 0.3 * position(rng), 0.3 * position(rng));
+    std::vector<Ray> rays;
+    for (int i = 0; i < 16; ++i) {
+        const Vec3 jitter = spread * scale * Vec3(unit(rng), unit(rng), unit(rng));
+        const Point3 origin = feelers ? from + jitter : from;
+        const Point3 target = feelers ? to : to + jitter;
+        rays.push_back(Ray{origin, glm::normalize(target - origin)});
+    }
+    return rays;
+}
+
+} // namespace
+
+TEST_P(FastPath, PacketsOfRaysGetTheAnswersOfRaysAlone) {
+    const auto [setting, layout] = GetParam();
+    const Scene fast(random_scene(3, 2000, setting.offset, setting.scale, layout), linked_leaf_kernels());
+    ASSERT_TRUE(fast.queries_packets());
+    std::mt19937 rng(11);
+    int hits = 0, blocked = 0, misses = 0, together = 0;
+    for (int b = 0; b < 300; ++b) {
+        const bool feelers = b % 2 == 1;
+        const std::vector<Ray> rays = bundle(rng, setting.offset, setting.scale, feelers, b % 3 == 0 ? 0.05 : 1.5);
+        const Interval eye_range{};
+        std::vector<Interval> ranges(rays.size(), eye_range);
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            if (feelers) ranges[i] = Interval{0.0, (3.0 + static_cast<double>(i % 5)) * setting.scale};
+        together += RayPacket(rays, ranges, 1.0).coherent();
+        std::vector<std::optional<Hit>> found(rays.size());
+        fast.closest_hits(rays, ranges, found);
+        bool packed[RayPacket::kMaxRays];
+        fast.occluded_rays(rays, ranges, std::span<bool>(packed, rays.size()));
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const auto expected = fast.closest_hit(rays[i], ranges[i]);
+            ASSERT_EQ(expected.has_value(), found[i].has_value()) << "bundle " << b << " ray " << i;
+            if (expected) {
+                EXPECT_EQ(expected->t, found[i]->t) << "bundle " << b << " ray " << i;
+                EXPECT_EQ(expected->primitive, found[i]->primitive) << "bundle " << b << " ray " << i;
+                EXPECT_EQ(expected->normal, found[i]->normal) << "bundle " << b << " ray " << i;
+            }
+            ASSERT_EQ(fast.occluded(rays[i], ranges[i]), packed[i]) << "bundle " << b << " ray " << i;
+            hits += expected.has_value();
+            misses += !expected.has_value();
+            blocked += packed[i];
+        }
+    }
+    EXPECT_GT(hits, 800); // the comparison means something only if many rays hit, and many miss
+    EXPECT_GT(misses, 300);
+    EXPECT_GT(blocked, 300);
+    EXPECT_GT(together, 150); // most bundles walk as packets (the others go one by one)
+}
+
+TEST(FastPath, EqualDistancesInManyLeavesGoToTheLowestIndexAlsoInPackets) {
+    // Forty copies of one triangle: their boxes are one box, so the BVH splits
+    // them by count into several leaves, which a ray alone and a packet visit in
+    // different orders. Every copy is hit at the same t; the answer must be the
+    // first copy (the labs' loop over all of them keeps the first), whatever the order.
+    SceneData data;
+    data.materials.push_back(Material{});
+    const Triangle triangle{Point3(-1.0, -1.0, 0.0), Point3(1.0, -1.0, 0.0), Point3(0.0, 1.0, 0.0)};
+    for (int i = 0; i < 40; ++i) data.primitives.push_back({triangle});
+    const Scene labs(data);
+    const Scene fast(data, linked_leaf_kernels());
+    std::vector<Ray> rays;
+    for (int i = 0; i < 16; ++i)
+        rays.push_back(Ray{Point3(0.0, 0.0, -3.0), glm::normalize(Vec3(0.02 * (i % 4) - 0.03, 0.02 * (i / 4) - 0.03, 1.0))});
+    const std::vector<Interval> ranges(rays.size(), Interval{});
+    std::vector<std::optional<Hit>> packed(rays.size());
+    fast.closest_hits(rays, ranges, packed);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const auto expected = closest_hit(rays[i], labs.primitives(), Interval{});
+        ASSERT_TRUE(expected && packed[i]);
+        EXPECT_EQ(expected->primitive, 0u);
+        EXPECT_EQ(labs.closest_hit(rays[i])->primitive, 0u);
+        EXPECT_EQ(fast.closest_hit(rays[i])->primitive, 0u);
+        EXPECT_EQ(packed[i]->primitive, 0u) << i;
+        EXPECT_EQ(packed[i]->t, expected->t);
+    }
 }

@@ -10,6 +10,7 @@
 // reference renderer calls them.
 #pragma once
 
+#include "whitted/hit.hpp"
 #include "whitted/interval.hpp"
 #include "whitted/ray.hpp"
 #include "whitted/shapes.hpp"
@@ -34,5 +35,17 @@ std::optional<double> plane_distance(const Ray& ray, const Plane& plane, Interva
 
 /// The distance and barycentric coordinates of the ray's hit with the triangle inside t_range, if any.
 std::optional<TriangleDistance> triangle_distance(const Ray& ray, const Triangle& triangle, Interval t_range);
+
+// The hits at those distances: intersect_sphere/plane/triangle return exactly
+// these, so a caller that already knows the distance need not test again.
+
+/// The hit on the sphere at distance t along the ray (t from sphere_distance).
+Hit sphere_hit(const Ray& ray, const Sphere& sphere, double t);
+
+/// The hit on the plane at distance t along the ray (t from plane_distance).
+Hit plane_hit(const Ray& ray, const Plane& plane, double t);
+
+/// The hit on the triangle where triangle_distance found it.
+Hit triangle_hit(const Ray& ray, const Triangle& triangle, const TriangleDistance& found);
 
 } // namespace whitted

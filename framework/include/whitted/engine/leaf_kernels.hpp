@@ -3,12 +3,13 @@
 // Why: the labs' `closest_hit()` builds a complete `Hit` (point, normals, side)
 // for every candidate a ray meets, and a shadow feeler builds one just to learn
 // "something is there". The reference renderer plugs in queries that walk the
-// BVH with distance-only tests, the reference lab 1's own (hit_distances.hpp);
-// the scene then builds one `Hit` for the nearest primitive
-// alone: the same image, bit for bit (instructor/tests/solution checks it), for less work.
+// BVH with distance-only tests, the reference lab 1's own (hit_distances.hpp),
+// and build one `Hit` for the nearest primitive alone, from the distance they
+// found: the same image, bit for bit (instructor/tests/solution checks it), for less work.
 // A student build has none, so every ray goes through the student's own code.
 #pragma once
 
+#include "whitted/hit.hpp"
 #include "whitted/interval.hpp"
 #include "whitted/primitive.hpp"
 #include "whitted/engine/wide_bvh.hpp"
@@ -28,10 +29,18 @@ struct SceneView {
 };
 
 struct LeafKernels {
-    /// The nearest primitive (its index) hit by the ray with t inside t_range, if any.
-    std::optional<std::uint32_t> (*closest)(const SceneView& scene, const Ray& ray, Interval t_range);
+    /// The hit of the ray on the nearest primitive with t inside t_range, if any,
+    /// as `intersect()` returns it (primitive and material set, vertex normals not yet applied).
+    std::optional<Hit> (*closest)(const SceneView& scene, const Ray& ray, Interval t_range);
     /// True when any primitive is hit with t inside t_range.
     bool (*occluded)(const SceneView& scene, const Ray& ray, Interval t_range);
+    /// closest() for rays[i] within t_ranges[i] into hits[i], up to
+    /// RayPacket::kMaxRays rays walking the BVH together: the very same answers.
+    void (*closest_packet)(const SceneView& scene, std::span<const Ray> rays, std::span<const Interval> t_ranges,
+                           std::span<std::optional<Hit>> hits);
+    /// occluded() for rays[i] within t_ranges[i] into blocked[i], up to RayPacket::kMaxRays rays together.
+    void (*occluded_packet)(const SceneView& scene, std::span<const Ray> rays, std::span<const Interval> t_ranges,
+                            std::span<bool> blocked);
 };
 
 /// The kernels this program was linked with: the reference renderer's, or

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "whitted/engine/bvh.hpp"
+#include "whitted/engine/ray_packet.hpp"
 #include "whitted/engine/wide_ray.hpp"
 
 #include <cstdint>
@@ -67,6 +68,12 @@ class WideBvh {
     void traverse_counting(const Ray& ray, double t_min, double t_max, LeafFn&& leaf, std::uint64_t& nodes_tested) const {
         traverse_impl<kNearestFirst, true>(ray, t_min, t_max, leaf, &nodes_tested);
     }
+
+    /// Walks the tree with a coherent packet: visits each leaf some of its active
+    /// rays may meet (nearer boxes first), calling `leaf(first, count, rays)` with
+    /// those rays' bits; the callback shrinks or retires rays through `packet`.
+    template <bool kNearestFirst = true, class LeafFn>
+    void traverse_packet(RayPacket& packet, LeafFn&& leaf) const;
 
   private:
     template <bool kNearestFirst, bool kCount, class LeafFn>
@@ -133,6 +140,56 @@ void WideBvh::traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& 
                 current = entry.ref;
                 break;
             }
+        }
+    }
+}
+
+template <bool kNearestFirst, class LeafFn>
+void WideBvh::traverse_packet(RayPacket& packet, LeafFn&& leaf) const {
+    if (nodes_.empty()) {
+        if (root_count_ > 0 && packet.active() != 0) leaf(0u, root_count_, packet.active());
+        return;
+    }
+    // A child goes on the stack with the rays that may meet it: the packet's
+    // test rules out boxes for all its rays at once, each ray's own test then
+    // keeps only its rays, so a packet whose rays part ways costs no more box
+    // tests than its rays alone.
+    struct Entry {
+        std::uint64_t ref;
+        float t_entry;
+        unsigned rays;
+    };
+    Entry stack[1024]; // <= 8 children per level; the builder's trees have < 100 levels
+    int top = 0;
+    std::uint32_t current = 0;
+    unsigned current_rays = packet.active();
+    for (;;) {
+        const Node& node = nodes_[current];
+        float t_entry[kWidth];
+        unsigned mask = packet.hit_boxes(node.bounds, t_entry);
+        const int base = top;
+        for (; mask != 0; mask &= mask - 1) {
+            const int i = __builtin_ctz(mask);
+            const unsigned rays = packet.rays_meeting(node.bounds, i, current_rays);
+            if (rays == 0) continue;
+            stack[top] = {node.child[i], t_entry[i], rays};
+            if constexpr (kNearestFirst)
+                for (int k = top; k > base && stack[k].t_entry > stack[k - 1].t_entry; --k) std::swap(stack[k], stack[k - 1]);
+            ++top;
+        }
+        // The nearest child next: an inner node is tested, a leaf searched by its rays.
+        for (;;) {
+            if (top == 0) return;
+            const Entry entry = stack[--top];
+            const unsigned rays = entry.rays & packet.active();
+            if (rays == 0 || entry.t_entry > packet.t_max()) continue;
+            if (!(entry.ref & kLeafFlag)) {
+                current = static_cast<std::uint32_t>(entry.ref);
+                current_rays = rays;
+                break;
+            }
+            leaf(static_cast<std::uint32_t>(entry.ref), static_cast<std::uint32_t>(entry.ref >> 32) & 0x7fffffffu, rays);
+            if (packet.active() == 0) return;
         }
     }
 }

@@ -113,6 +113,8 @@ class WideRay {
     }
 
   private:
+    friend class RayPacket; // bundles the per-ray numbers of several rays
+
     // e such that x = m 2^e with m in [0.5, 1); 0 for 0, infinities and NaN.
     static int binary_exponent(double x) {
         const auto biased = static_cast<int>(std::bit_cast<std::uint64_t>(x) >> 52 & 0x7ff);
