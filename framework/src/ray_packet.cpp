@@ -4,56 +4,94 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <limits>
 
 namespace whitted {
+namespace {
+
+// The smallest and the largest of values[0..count) (values 16-byte aligned), four at a time.
+float lowest(const float* values, int count) {
+    float low = values[0];
+    int i = 0;
+#if defined(__SSE2__)
+    if (count >= 4) {
+        __m128 four = _mm_load_ps(values);
+        for (i = 4; i + 4 <= count; i += 4) four = _mm_min_ps(four, _mm_load_ps(values + i));
+        alignas(16) float lanes[4];
+        _mm_store_ps(lanes, four);
+        low = std::min(std::min(lanes[0], lanes[1]), std::min(lanes[2], lanes[3]));
+    }
+#endif
+    for (; i < count; ++i) low = std::min(low, values[i]);
+    return low;
+}
+float highest(const float* values, int count) {
+    float high = values[0];
+    int i = 0;
+#if defined(__SSE2__)
+    if (count >= 4) {
+        __m128 four = _mm_load_ps(values);
+        for (i = 4; i + 4 <= count; i += 4) four = _mm_max_ps(four, _mm_load_ps(values + i));
+        alignas(16) float lanes[4];
+        _mm_store_ps(lanes, four);
+        high = std::max(std::max(lanes[0], lanes[1]), std::max(lanes[2], lanes[3]));
+    }
+#endif
+    for (; i < count; ++i) high = std::max(high, values[i]);
+    return high;
+}
+
+} // namespace
 
 RayPacket::RayPacket(std::span<const Ray> rays, std::span<const Interval> t_ranges, double extent) {
     assert(rays.size() == t_ranges.size() && rays.size() <= static_cast<std::size_t>(kMaxRays));
-    constexpr float kInf = std::numeric_limits<float>::infinity();
-    // Lanes without a ray: an empty range, which no box test passes.
-    std::fill(std::begin(t_min_), std::end(t_min_), kInf);
-    std::fill(std::begin(t_max_), std::end(t_max_), -kInf);
-    for (int axis = 0; axis < 3; ++axis) {
-        std::fill(std::begin(inv_[axis]), std::end(inv_[axis]), 1.0f);
-        std::fill(std::begin(origin_entry_[axis]), std::end(origin_entry_[axis]), 0.0f);
-        std::fill(std::begin(origin_exit_[axis]), std::end(origin_exit_[axis]), 0.0f);
-    }
     const int count = static_cast<int>(rays.size());
     active_ = count == kMaxRays ? 0xffffu : (1u << count) - 1u;
     coherent_ = count > 0;
-    for (int i = 0; i < count; ++i) {
-        const WideRay wide(rays[i], extent, t_ranges[i].min, t_ranges[i].max);
+    // Rays that go different ways on an axis cannot share a test: found before any other work.
+    for (int i = 1; i < count && coherent_; ++i)
+        for (int axis = 0; axis < 3; ++axis)
+            if (std::signbit(rays[i].direction[axis]) != std::signbit(rays[0].direction[axis])) coherent_ = false;
+    if (!coherent_) return;
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    for (int i = 0; i < kMaxRays; ++i) {
+        if (i >= count) { // a lane without a ray: an empty range, which no box test passes
+            t_min_[i] = kInf;
+            t_max_[i] = -kInf;
+            for (int axis = 0; axis < 3; ++axis) inv_[axis][i] = 1.0f, origin_entry_[axis][i] = origin_exit_[axis][i] = 0.0f;
+            continue;
+        }
+        const WideRay::Numbers n = WideRay::numbers(rays[i], extent, t_ranges[i].min, t_ranges[i].max);
         if (i == 0) {
-            inverse_scale_ = wide.inverse_scale_;
+            inverse_scale_ = n.inverse_scale;
             for (int axis = 0; axis < 3; ++axis) {
-                near_[axis] = wide.near_[axis];
-                far_[axis] = wide.far_[axis];
+                near_[axis] = 2 * axis + (n.negative[axis] ? 1 : 0);
+                far_[axis] = 2 * axis + (n.negative[axis] ? 0 : 1);
             }
-        } else if (wide.inverse_scale_ != inverse_scale_ || !std::equal(near_, near_ + 3, wide.near_)) {
-            coherent_ = false;
         }
+        // The same scale, and the same signs (a component of -0 or +0 becomes a tiny one of its sign).
+        if (n.inverse_scale != inverse_scale_) coherent_ = false;
         for (int axis = 0; axis < 3; ++axis) {
-            inv_[axis][i] = wide.inv_[axis][0];
-            origin_entry_[axis][i] = wide.origin_entry_[axis][0];
-            origin_exit_[axis][i] = wide.origin_exit_[axis][0];
+            if (near_[axis] != 2 * axis + (n.negative[axis] ? 1 : 0)) coherent_ = false;
+            inv_[axis][i] = n.inv[axis];
+            origin_entry_[axis][i] = n.origin_entry[axis];
+            origin_exit_[axis][i] = n.origin_exit[axis];
         }
-        t_min_[i] = wide.t_min_;
-        t_max_[i] = wide.t_max_;
+        t_min_[i] = n.t_min;
+        t_max_[i] = n.t_max;
     }
     if (!coherent_) return;
-    t_min_low_ = *std::min_element(t_min_, t_min_ + count);
+    // The packet's ranges (lanes without a ray hold values that change no minimum or maximum they enter).
+    t_min_low_ = lowest(t_min_, count);
     for (int axis = 0; axis < 3; ++axis) {
-        const float* inv = inv_[axis];
-        inv_low_[axis] = *std::min_element(inv, inv + count);
-        inv_high_[axis] = *std::max_element(inv, inv + count);
+        inv_low_[axis] = lowest(inv_[axis], count);
+        inv_high_[axis] = highest(inv_[axis], count);
         // Positive direction: the entry distance is smallest from the farthest-along
         // origin, the exit distance largest from the least-along one; negative: the reverse.
         const bool positive = near_[axis] == 2 * axis;
-        const float* entry = origin_entry_[axis];
-        const float* exit = origin_exit_[axis];
-        entry_origin_[axis] = positive ? *std::max_element(entry, entry + count) : *std::min_element(entry, entry + count);
-        exit_origin_[axis] = positive ? *std::min_element(exit, exit + count) : *std::max_element(exit, exit + count);
+        entry_origin_[axis] = positive ? highest(origin_entry_[axis], count) : lowest(origin_entry_[axis], count);
+        exit_origin_[axis] = positive ? lowest(origin_exit_[axis], count) : highest(origin_exit_[axis], count);
     }
     refresh_t_max();
 }

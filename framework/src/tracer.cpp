@@ -1,11 +1,9 @@
 #include "whitted/tracer.hpp"
 
-#include "whitted/engine/ray_packet.hpp"
+#include "tracer_engine.hpp"
 #include "whitted/labs.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <utility>
 
 namespace whitted {
@@ -27,80 +25,6 @@ void RayStats::count(RayKind kind) {
     case RayKind::refracted: ++refracted; break;
     }
 }
-
-// What a tracer holds: the scene and settings it follows, where its counts go,
-// and where it stands within the current pixel.
-struct Tracer::Engine {
-    const Scene& scene;
-    const RenderSettings& settings;
-    RayStats& stats;
-    RayTree* tree = nullptr;
-    Color path_weight{1.0};         // accumulated weight of the ray being traced
-    std::uint32_t pixel_rays = 0;   // rays cast so far for the current pixel
-    bool pixel_cut_short = false;
-    PixelSample sample{};           // the pixel sample being traced
-    int current_node = -1;          // the ray being shaded, in tree
-    std::vector<PointLight> lights{}; // lights() with area lights, for the sample `lights_for`
-    std::optional<PixelSample> lights_for{};
-
-    // Answers found ahead for a pixel by trace_pixels(): its eye ray's hit and
-    // the shadow feelers from there. A query is answered from here only when it
-    // is the very same query, bit for bit, so the image cannot change.
-    struct Feeler {
-        Ray ray;
-        double distance = 0.0;
-        std::size_t light = 0; // which of lights()
-        bool blocked = false;
-    };
-    struct Ahead {
-        Ray eye;
-        std::optional<Hit> hit;
-        std::vector<Feeler> feelers;
-    };
-    struct Batch { // the feelers towards one light, as occluded_rays() takes them; scratch, so a copy starts empty
-        Batch() = default;
-        Batch(const Batch&) {}
-        Batch& operator=(const Batch&) { return *this; }
-        std::vector<Ray> rays;
-        std::vector<Interval> ranges;
-        std::vector<Feeler*> owners;
-        std::unique_ptr<bool[]> blocked; // not vector<bool>: occluded_rays() writes a span of bool
-        std::size_t room = 0;
-        void clear() {
-            rays.clear();
-            ranges.clear();
-            owners.clear();
-        }
-    };
-    std::vector<Ahead> block{};            // one per pixel of the block being traced
-    Batch batch{};
-    const Ahead* ahead = nullptr;          // the current pixel's, while trace_pixels() traces it
-    std::vector<Feeler>* collecting = nullptr; // set: occluded() notes the feeler instead of tracing it
-
-    /// Whitted's adaptive depth control: a secondary ray too weak to change the pixel.
-    bool too_weak(RayKind kind, const Color& weight) const {
-        return kind != RayKind::eye && glm::all(glm::lessThan(weight, Color(settings.min_weight)));
-    }
-    /// Counts one more ray for the current pixel; false once the pixel is over budget.
-    bool within_budget() {
-        if (++pixel_rays <= settings.max_rays_per_pixel) return true;
-        pixel_cut_short = true;
-        return false;
-    }
-    /// Returns `color` after writing it into the ray being shaded as one of its parts.
-    Color noted(std::optional<Color> RayNode::*part, const Color& color) {
-        if (tree && current_node >= 0) [[unlikely]]
-            tree->nodes[current_node].*part = color;
-        return color;
-    }
-
-    Color shade(const Tracer& tracer, const Ray& ray, int depth);
-    // Ray tree recording: only with a tree, and kept out of the way of renders without one.
-    [[gnu::noinline]] Color trace_recorded(const Tracer& tracer, const Ray& ray, int depth, RayKind kind, const Color& weight);
-    [[gnu::noinline]] bool occluded_recorded(const Ray& ray, double distance);
-    [[gnu::cold, gnu::noinline]] int record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight);
-    [[gnu::cold, gnu::noinline]] void record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked);
-};
 
 Tracer::Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats, RayTree* tree)
     : engine_(std::make_unique<Engine>(Engine{scene, settings, stats, tree})) {}
@@ -188,25 +112,8 @@ Color Tracer::Engine::trace_recorded(const Tracer& tracer, const Ray& ray, int d
 }
 
 // The recursion of the slides: closest hit, local colour, then secondary rays.
-namespace {
-
-// True when both are the very same bits (a query answered ahead must be this one).
-template <class T>
-bool same_bits(const T& a, const T& b) {
-    return std::memcmp(&a, &b, sizeof(T)) == 0;
-}
-
-// The sample trace_pixel() traces for viewport position (x, y): sample 0 of the
-// pixel that contains it (pixel 0 for a position no pixel has).
-PixelSample sample_at(double x, double y) {
-    const auto pixel = [](double v) { return v > -1e9 && v < 1e9 ? static_cast<int>(std::floor(v)) : 0; };
-    return PixelSample{pixel(x), pixel(y), 0};
-}
-
-} // namespace
-
 Color Tracer::Engine::shade(const Tracer& tracer, const Ray& ray, int depth) {
-    const std::optional<Hit> hit = depth == 1 && ahead && same_bits(ray, ahead->eye) ? ahead->hit : scene.closest_hit(ray);
+    const std::optional<Hit> hit = closest_hit(ray, depth);
     if (tree) [[unlikely]]
         tree->nodes[current_node].hit = hit;
     if (!hit) return scene.background(ray.direction);
@@ -237,72 +144,6 @@ void Tracer::begin_pixel(const PixelSample& sample) const {
 
 Color Tracer::trace_pixel(double x, double y) const { return trace_sample(sample_at(x, y), x, y); }
 
-void Tracer::trace_pixels(std::span<const Vec2> positions, std::span<Color> colors) const {
-    Engine& e = *engine_;
-    const Camera& camera = e.scene.camera();
-    const bool lens = camera.aperture > 0.0 && e.settings.stage >= stage_number(Stage::depth_of_field);
-    if (e.tree || lens || !e.scene.queries_packets() || positions.size() > RayPacket::kMaxRays) {
-        for (std::size_t i = 0; i < positions.size(); ++i) colors[i] = trace_pixel(positions[i].x, positions[i].y);
-        return;
-    }
-    // The eye rays, together.
-    const std::size_t count = positions.size();
-    e.block.resize(count);
-    Ray eye[RayPacket::kMaxRays];
-    Interval ranges[RayPacket::kMaxRays];
-    std::optional<Hit> hits[RayPacket::kMaxRays];
-    for (std::size_t i = 0; i < count; ++i) {
-        eye[i] = primary_ray(camera, positions[i].x, positions[i].y);
-        ranges[i] = Interval{}; // shade()'s closest_hit(ray)
-    }
-    e.scene.closest_hits(std::span(eye, count), std::span(ranges, count), std::span(hits, count));
-    // The shadow feelers the shading of each hit will ask for (lab 2's is_lit,
-    // run with occluded() noting its feeler), then those towards each light together.
-    std::size_t light_count = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        Engine::Ahead& ahead = e.block[i];
-        ahead.eye = eye[i];
-        ahead.hit = hits[i];
-        ahead.feelers.clear();
-        if (!hits[i] || e.settings.stage < stage_number(Stage::shadows)) continue;
-        begin_pixel(sample_at(positions[i].x, positions[i].y)); // the sample's lights
-        const std::span<const PointLight> lights = this->lights();
-        light_count = std::max(light_count, lights.size());
-        e.collecting = &ahead.feelers;
-        for (std::size_t l = 0; l < lights.size(); ++l) {
-            // The labs send no feeler towards a light behind the surface.
-            if (glm::dot(hits[i]->normal, lights[l].position - hits[i]->point) <= 0.0) continue;
-            const std::size_t before = ahead.feelers.size();
-            is_lit(*this, *hits[i], lights[l]);
-            for (std::size_t f = before; f < ahead.feelers.size(); ++f) ahead.feelers[f].light = l;
-        }
-        e.collecting = nullptr;
-    }
-    for (std::size_t l = 0; l < light_count; ++l) {
-        Engine::Batch& batch = e.batch;
-        batch.clear();
-        for (std::size_t i = 0; i < count; ++i)
-            for (Engine::Feeler& feeler : e.block[i].feelers)
-                if (feeler.light == l) {
-                    batch.rays.push_back(feeler.ray);
-                    batch.ranges.push_back(Interval{0.0, feeler.distance * (1.0 - 1e-6)}); // occluded()'s range
-                    batch.owners.push_back(&feeler);
-                }
-        if (batch.room < batch.rays.size()) {
-            batch.room = std::max<std::size_t>(batch.rays.size(), 64);
-            batch.blocked = std::make_unique<bool[]>(batch.room);
-        }
-        e.scene.occluded_rays(batch.rays, batch.ranges, std::span(batch.blocked.get(), batch.rays.size()));
-        for (std::size_t f = 0; f < batch.owners.size(); ++f) batch.owners[f]->blocked = batch.blocked[f];
-    }
-    // Each pixel as trace_pixel() traces it, its queries answered from above.
-    for (std::size_t i = 0; i < count; ++i) {
-        e.ahead = &e.block[i];
-        colors[i] = trace_pixel(positions[i].x, positions[i].y);
-        e.ahead = nullptr;
-    }
-}
-
 Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const {
     Engine& e = *engine_;
     begin_pixel(sample);
@@ -320,17 +161,15 @@ Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const 
 
 bool Tracer::occluded(const Ray& ray, double distance) const {
     Engine& e = *engine_;
-    if (e.collecting) { // trace_pixels() asking which feelers a hit will send
-        e.collecting->push_back(Engine::Feeler{ray, distance});
+    if (e.collecting_feelers) { // trace_pixels() looking ahead: which feelers will this hit send?
+        e.collecting_feelers->push_back(Engine::Feeler{ray, distance});
         return false;
     }
     if (e.tree) [[unlikely]]
         return e.occluded_recorded(ray, distance);
     if (!e.within_budget()) return true; // over budget: no more light is gathered for this pixel
     e.stats.count(RayKind::shadow);
-    if (e.ahead)
-        for (const Engine::Feeler& feeler : e.ahead->feelers)
-            if (same_bits(feeler.ray, ray) && same_bits(feeler.distance, distance)) return feeler.blocked;
+    if (const std::optional<bool> blocked = e.blocked_ahead(ray, distance)) return *blocked;
     return e.scene.occluded(ray, Interval{0.0, distance * (1.0 - 1e-6)});
 }
 

@@ -32,16 +32,26 @@ namespace whitted {
 
 class WideRay {
   public:
-    /// Prepares `ray` for boxes built by WideBvh (faces moved outwards) within a
-    /// scene whose coordinates are at most `extent` in size, for t in (t_min, t_max).
-    WideRay(const Ray& ray, double extent, double t_min, double t_max) {
+    /// One ray's numbers for the slab test, before they are spread over lanes.
+    struct Numbers {
+        float inv[3];          // 1 / direction, the direction scaled by a power of two
+        float origin_entry[3]; // the origin moved along the ray by the margin (entry distances)
+        float origin_exit[3];  // ... and moved back (exit distances)
+        bool negative[3];      // the direction's sign on each axis
+        double inverse_scale;  // distances in the scaled ray's units are t * inverse_scale
+        float t_min, t_max;    // the range in those units, rounded outwards
+    };
+
+    /// The numbers WideRay(ray, extent, t_min, t_max) tests boxes with.
+    static Numbers numbers(const Ray& ray, double extent, double t_min, double t_max) {
+        Numbers n;
         // Scale the direction by a power of two (exactly) so that its largest
         // component lies in [0.5, 1): float then holds every direction, however
         // long or short; distances along the scaled ray are t / scale.
         const Vec3 magnitude = glm::abs(ray.direction);
         const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
         const int exponent = std::clamp(binary_exponent(largest), -1020, 1020); // both scales stay finite
-        inverse_scale_ = power_of_two(exponent);
+        n.inverse_scale = power_of_two(exponent);
         const double scale = power_of_two(-exponent);
         const Vec3 origin_magnitude = glm::abs(ray.origin);
         const double origin_size = std::max({origin_magnitude.x, origin_magnitude.y, origin_magnitude.z});
@@ -52,22 +62,36 @@ class WideRay {
         for (int axis = 0; axis < 3; ++axis) {
             double d = ray.direction[axis] * scale; // exact: a power of two
             if (!(std::abs(d) >= 0x1p-62)) d = std::copysign(0x1p-62, d);
-            const bool negative = d < 0.0;
-            const float inv = 1.0f / static_cast<float>(d); // its rounding, like every other, is far below the margin
+            n.negative[axis] = d < 0.0;
+            n.inv[axis] = 1.0f / static_cast<float>(d); // its rounding, like every other, is far below the margin
             // Entry: origin moved along the ray by the margin; exit: moved back.
-            const double shift = negative ? -margin : margin;
-            const float entry_origin = static_cast<float>(ray.origin[axis] + shift);
-            const float exit_origin = static_cast<float>(ray.origin[axis] - shift);
-            for (int lane = 0; lane < 4; ++lane) {
-                inv_[axis][lane] = inv;
-                origin_entry_[axis][lane] = entry_origin;
-                origin_exit_[axis][lane] = exit_origin;
-            }
-            near_[axis] = 2 * axis + (negative ? 1 : 0);
-            far_[axis] = 2 * axis + (negative ? 0 : 1);
+            const double shift = n.negative[axis] ? -margin : margin;
+            n.origin_entry[axis] = static_cast<float>(ray.origin[axis] + shift);
+            n.origin_exit[axis] = static_cast<float>(ray.origin[axis] - shift);
         }
-        t_min_ = round_down(t_min * inverse_scale_);
-        t_max_ = round_up(t_max * inverse_scale_);
+        n.t_min = round_down(t_min * n.inverse_scale);
+        n.t_max = round_up(t_max * n.inverse_scale);
+        return n;
+    }
+
+    /// Prepares `ray` for boxes built by WideBvh (faces moved outwards) within a
+    /// scene whose coordinates are at most `extent` in size, for t in (t_min, t_max).
+    WideRay(const Ray& ray, double extent, double t_min, double t_max) : WideRay(numbers(ray, extent, t_min, t_max)) {}
+
+    /// A ray prepared from its numbers.
+    explicit WideRay(const Numbers& n) {
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int lane = 0; lane < 4; ++lane) {
+                inv_[axis][lane] = n.inv[axis];
+                origin_entry_[axis][lane] = n.origin_entry[axis];
+                origin_exit_[axis][lane] = n.origin_exit[axis];
+            }
+            near_[axis] = 2 * axis + (n.negative[axis] ? 1 : 0);
+            far_[axis] = 2 * axis + (n.negative[axis] ? 0 : 1);
+        }
+        inverse_scale_ = n.inverse_scale;
+        t_min_ = n.t_min;
+        t_max_ = n.t_max;
     }
 
     float t_min() const { return t_min_; }

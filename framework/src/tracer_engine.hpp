@@ -1,0 +1,107 @@
+// What a tracer holds (private to tracer.cpp and trace_ahead.cpp).
+#pragma once
+
+#include "whitted/tracer.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace whitted {
+
+// What a tracer holds: the scene and settings it follows, where its counts go,
+// where it stands within the current pixel, and the answers trace_pixels()
+// found ahead for it.
+struct Tracer::Engine {
+    const Scene& scene;
+    const RenderSettings& settings;
+    RayStats& stats;
+    RayTree* tree = nullptr;
+    Color path_weight{1.0};         // accumulated weight of the ray being traced
+    std::uint32_t pixel_rays = 0;   // rays cast so far for the current pixel
+    bool pixel_cut_short = false;
+    PixelSample sample{};           // the pixel sample being traced
+    int current_node = -1;          // the ray being shaded, in tree
+    std::vector<PointLight> lights{}; // lights() with area lights, for the sample `lights_for`
+    std::optional<PixelSample> lights_for{};
+
+    // Answers found ahead for a pixel by trace_pixels() (trace_ahead.cpp): the
+    // hit of its eye ray and the shadow feelers sent from there. A query is
+    // answered from here only when it is the very same query, bit for bit, so
+    // the image cannot change.
+    struct Feeler {
+        Ray ray;
+        double distance = 0.0;
+        std::size_t light = 0; // which of lights()
+        bool blocked = false;
+    };
+    struct Ahead {
+        Ray eye;
+        std::optional<Hit> hit;
+        std::vector<Feeler> feelers;
+    };
+    // trace_pixels()'s working lists; scratch, so a copy of the tracer starts without them.
+    struct Scratch {
+        Scratch() = default;
+        Scratch(const Scratch&) {}
+        Scratch& operator=(const Scratch&) { return *this; }
+        std::vector<Ahead> block; // one per pixel of the block
+        std::vector<Ray> rays;
+        std::vector<Interval> ranges;
+        std::vector<std::optional<Hit>> hits;
+        std::vector<Feeler*> feelers;
+    };
+    Scratch scratch{};
+    const Ahead* ahead = nullptr; // the current pixel's answers, while trace_pixels() traces it
+    // Set while looking ahead: occluded() notes its feeler here instead of tracing it.
+    std::vector<Feeler>* collecting_feelers = nullptr;
+
+    /// Whitted's adaptive depth control: a secondary ray too weak to change the pixel.
+    bool too_weak(RayKind kind, const Color& weight) const {
+        return kind != RayKind::eye && glm::all(glm::lessThan(weight, Color(settings.min_weight)));
+    }
+    /// Counts one more ray for the current pixel; false once the pixel is over budget.
+    bool within_budget() {
+        if (++pixel_rays <= settings.max_rays_per_pixel) return true;
+        pixel_cut_short = true;
+        return false;
+    }
+    /// Returns `color` after writing it into the ray being shaded as one of its parts.
+    Color noted(std::optional<Color> RayNode::*part, const Color& color) {
+        if (tree && current_node >= 0) [[unlikely]]
+            tree->nodes[current_node].*part = color;
+        return color;
+    }
+
+    /// The closest hit along `ray` (any t), which is at `depth`: answered ahead, or asked of the scene.
+    std::optional<Hit> closest_hit(const Ray& ray, int depth) const;
+    /// Whether the feeler is blocked, if it was answered ahead.
+    std::optional<bool> blocked_ahead(const Ray& ray, double distance) const;
+
+    Color shade(const Tracer& tracer, const Ray& ray, int depth);
+    // Ray tree recording: only with a tree, and kept out of the way of renders without one.
+    [[gnu::noinline]] Color trace_recorded(const Tracer& tracer, const Ray& ray, int depth, RayKind kind, const Color& weight);
+    [[gnu::noinline]] bool occluded_recorded(const Ray& ray, double distance);
+    [[gnu::cold, gnu::noinline]] int record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight);
+    [[gnu::cold, gnu::noinline]] void record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked);
+};
+
+/// True when both are the very same bits (a query answered ahead must be this one).
+inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+inline bool same_bits(const Ray& a, const Ray& b) {
+    bool same = true;
+    for (int axis = 0; axis < 3; ++axis)
+        same &= same_bits(a.origin[axis], b.origin[axis]) & same_bits(a.direction[axis], b.direction[axis]);
+    return same;
+}
+
+/// The sample trace_pixel() traces for viewport position (x, y): sample 0 of
+/// the pixel that contains it (pixel 0 for a position no pixel has).
+inline PixelSample sample_at(double x, double y) {
+    const auto pixel = [](double v) { return v > -1e9 && v < 1e9 ? static_cast<int>(std::floor(v)) : 0; };
+    return PixelSample{pixel(x), pixel(y), 0};
+}
+
+} // namespace whitted
