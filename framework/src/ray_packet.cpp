@@ -10,37 +10,27 @@
 namespace whitted {
 namespace {
 
-// The smallest and the largest of values[0..count) (values 16-byte aligned), four at a time.
-float lowest(const float* values, int count) {
-    float low = values[0];
+// The smallest (or, kHighest, the largest) of values[0..count) (16-byte aligned), four at a time.
+template <bool kHighest>
+float extreme(const float* values, int count) {
+    const auto pick = [](float a, float b) { return kHighest ? std::max(a, b) : std::min(a, b); };
+    float found = values[0];
     int i = 0;
 #if defined(__SSE2__)
     if (count >= 4) {
         __m128 four = _mm_load_ps(values);
-        for (i = 4; i + 4 <= count; i += 4) four = _mm_min_ps(four, _mm_load_ps(values + i));
+        for (i = 4; i + 4 <= count; i += 4)
+            four = kHighest ? _mm_max_ps(four, _mm_load_ps(values + i)) : _mm_min_ps(four, _mm_load_ps(values + i));
         alignas(16) float lanes[4];
         _mm_store_ps(lanes, four);
-        low = std::min(std::min(lanes[0], lanes[1]), std::min(lanes[2], lanes[3]));
+        found = pick(pick(lanes[0], lanes[1]), pick(lanes[2], lanes[3]));
     }
 #endif
-    for (; i < count; ++i) low = std::min(low, values[i]);
-    return low;
+    for (; i < count; ++i) found = pick(found, values[i]);
+    return found;
 }
-float highest(const float* values, int count) {
-    float high = values[0];
-    int i = 0;
-#if defined(__SSE2__)
-    if (count >= 4) {
-        __m128 four = _mm_load_ps(values);
-        for (i = 4; i + 4 <= count; i += 4) four = _mm_max_ps(four, _mm_load_ps(values + i));
-        alignas(16) float lanes[4];
-        _mm_store_ps(lanes, four);
-        high = std::max(std::max(lanes[0], lanes[1]), std::max(lanes[2], lanes[3]));
-    }
-#endif
-    for (; i < count; ++i) high = std::max(high, values[i]);
-    return high;
-}
+float lowest(const float* values, int count) { return extreme<false>(values, count); }
+float highest(const float* values, int count) { return extreme<true>(values, count); }
 
 } // namespace
 
