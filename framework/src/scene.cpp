@@ -172,7 +172,8 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     }
     // At equal distances the lower index wins, in whatever order the leaves come
     // (as in the reference leaf kernels, whose packets of rays walk them in
-    // another order than a ray alone); a plane, tested first, wins over them all.
+    // another order than a ray alone); a plane, tested first, wins over them all
+    // (a box standing on the floor plane shows the floor).
     bool in_bvh = false;
     bvh_->traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
         const bool lower = in_bvh && first < nearest->primitive; // leaves hold consecutive indices
@@ -274,7 +275,7 @@ void for_each_packet(std::size_t size, PacketFn&& packet) {
 
 bool Scene::queries_packets() const {
     // A BVH of one leaf has no boxes for a packet to share.
-    return kernels_ && kernels_->closest_packet && data_.acceleration != Acceleration::none && !grid_ &&
+    return kernels_ && kernels_->closest_packet && kernels_->occluded_packet && data_.acceleration != Acceleration::none && !grid_ &&
            !bvh_->nodes().empty();
 }
 

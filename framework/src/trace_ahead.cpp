@@ -38,18 +38,35 @@ std::optional<bool> Tracer::Engine::blocked_ahead(const Ray& ray, double distanc
 
 namespace {
 
+// occluded() notes feelers into a list while one of these lives (even if is_lit throws).
+struct Collecting {
+    Tracer::Engine& e;
+    Collecting(Tracer::Engine& engine, std::vector<Tracer::Engine::Feeler>& feelers) : e(engine) { e.collecting_feelers = &feelers; }
+    ~Collecting() { e.collecting_feelers = nullptr; }
+    Collecting(const Collecting&) = delete;
+    Collecting& operator=(const Collecting&) = delete;
+};
+
+// A pixel's queries are answered from its look-ahead while one of these lives.
+struct Answering {
+    Tracer::Engine& e;
+    Answering(Tracer::Engine& engine, const Tracer::Engine::Ahead& ahead) : e(engine) { e.ahead = &ahead; }
+    ~Answering() { e.ahead = nullptr; }
+    Answering(const Answering&) = delete;
+    Answering& operator=(const Answering&) = delete;
+};
+
 // Notes the feelers the shading of `hit` will send (the labs send none towards
 // a light behind the surface), with the light each goes to.
 void note_feelers(const Tracer& tracer, Tracer::Engine& e, const Hit& hit, std::vector<Tracer::Engine::Feeler>& feelers) {
     const std::span<const PointLight> lights = tracer.lights();
-    e.collecting_feelers = &feelers;
+    const Collecting collecting(e, feelers);
     for (std::size_t l = 0; l < lights.size(); ++l) {
         if (glm::dot(hit.normal, lights[l].position - hit.point) <= 0.0) continue;
         const std::size_t before = feelers.size();
         is_lit(tracer, hit, lights[l]);
         for (std::size_t f = before; f < feelers.size(); ++f) feelers[f].light = l;
     }
-    e.collecting_feelers = nullptr;
 }
 
 // Finds whether the noted feelers are blocked, those towards one light together.
@@ -111,9 +128,8 @@ void Tracer::trace_pixels(std::span<const Vec2> positions, std::span<Color> colo
     find_blockers(e, light_count);
     // Each pixel as trace_pixel() traces it, its queries answered from above.
     for (std::size_t i = 0; i < count; ++i) {
-        e.ahead = &s.block[i];
+        const Answering answering(e, s.block[i]);
         colors[i] = trace_pixel(positions[i].x, positions[i].y);
-        e.ahead = nullptr;
     }
 }
 

@@ -28,9 +28,16 @@ void RayStats::count(RayKind kind) {
 
 Tracer::Tracer(const Scene& scene, const RenderSettings& settings, RayStats& stats, RayTree* tree)
     : engine_(std::make_unique<Engine>(Engine{scene, settings, stats, tree})) {}
-Tracer::Tracer(const Tracer& other) : engine_(std::make_unique<Engine>(*other.engine_)) {}
+// A copy traces on its own: no answers or notes that point into the original.
+Tracer::Tracer(const Tracer& other) : engine_(std::make_unique<Engine>(*other.engine_)) {
+    engine_->ahead = nullptr;
+    engine_->collecting_feelers = nullptr;
+}
 Tracer& Tracer::operator=(const Tracer& other) {
-    if (this != &other) engine_ = std::make_unique<Engine>(*other.engine_);
+    if (this != &other) {
+        Tracer copy(other);
+        engine_ = std::move(copy.engine_);
+    }
     return *this;
 }
 Tracer::~Tracer() = default;

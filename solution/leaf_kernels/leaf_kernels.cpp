@@ -58,7 +58,8 @@ std::optional<Hit> hit_at(const Ray& ray, const Primitive& primitive, double t, 
 // One ray's nearest hit so far: which primitive, how far, where on a triangle.
 struct Nearest {
     double t;                          // the search's upper end until something is found
-    std::uint32_t index = kNoPrimitive; // kNoPrimitive: nothing yet, or an infinite plane
+    std::uint32_t index = kNoPrimitive; // kNoPrimitive: nothing yet, or an infinite plane (`plane`)
+    std::uint32_t plane = 0;
     bool found = false;
     TriangleDistance on_triangle{};
 
@@ -67,7 +68,7 @@ struct Nearest {
     // Tests primitive i of the BVH. At equal distances the lower index wins,
     // whatever order the leaves come in (a ray alone and a packet of rays walk
     // them in different orders, and must agree), and a plane, tested first, wins
-    // over any primitive of the BVH.
+    // over any primitive of the BVH (a box standing on the floor plane shows the floor).
     void test(const Ray& ray, const Primitive& primitive, std::uint32_t i, double t_min) {
         const double limit = index != kNoPrimitive && i < index ? std::nextafter(t, kMiss) : t;
         TriangleDistance candidate;
@@ -82,36 +83,34 @@ struct Nearest {
 
 // The infinite planes, which the BVH does not hold: tested first, so that a hit
 // there shortens the range the BVH must search.
-Nearest nearest_plane(const SceneView& scene, const Ray& ray, Interval t_range, std::uint32_t& plane) {
+Nearest nearest_plane(const SceneView& scene, const Ray& ray, Interval t_range) {
     Nearest nearest{t_range.max};
     TriangleDistance unused;
     for (std::size_t i = scene.bounded_count; i < scene.primitives.size(); ++i) {
         if (const double t = distance(ray, scene.primitives[i], Interval{t_range.min, nearest.t}, unused); t != kMiss) {
             nearest.t = t;
             nearest.found = true;
-            plane = static_cast<std::uint32_t>(i);
+            nearest.plane = static_cast<std::uint32_t>(i);
         }
     }
     return nearest;
 }
 
 // The hit the search found, built once.
-std::optional<Hit> nearest_hit(const SceneView& scene, const Ray& ray, const Nearest& nearest, std::uint32_t plane,
-                               Interval t_range) {
+std::optional<Hit> nearest_hit(const SceneView& scene, const Ray& ray, const Nearest& nearest, Interval t_range) {
     if (!nearest.found) return std::nullopt;
-    const std::uint32_t i = nearest.index != Nearest::kNoPrimitive ? nearest.index : plane;
+    const std::uint32_t i = nearest.index != Nearest::kNoPrimitive ? nearest.index : nearest.plane;
     return hit_at(ray, scene.primitives[i], nearest.t, nearest.on_triangle, t_range);
 }
 
 // The scene's closest-hit query: planes first, then the BVH, nearer boxes first.
 std::optional<Hit> closest(const SceneView& scene, const Ray& ray, Interval t_range) {
-    std::uint32_t plane = 0;
-    Nearest nearest = nearest_plane(scene, ray, t_range, plane);
+    Nearest nearest = nearest_plane(scene, ray, t_range);
     scene.bvh.traverse(ray, t_range.min, nearest.t, [&](std::uint32_t first, std::uint32_t count, double) {
         for (std::uint32_t i = first; i < first + count; ++i) nearest.test(ray, scene.primitives[i], i, t_range.min);
         return nearest.t;
     });
-    return nearest_hit(scene, ray, nearest, plane, t_range);
+    return nearest_hit(scene, ray, nearest, t_range);
 }
 
 // The scene's occlusion query: any hit will do, so the first one ends it.
@@ -141,9 +140,8 @@ void closest_packet(const SceneView& scene, std::span<const Ray> rays, std::span
         return;
     }
     Nearest nearest[RayPacket::kMaxRays];
-    std::uint32_t plane[RayPacket::kMaxRays];
     for (std::size_t r = 0; r < rays.size(); ++r) {
-        nearest[r] = nearest_plane(scene, rays[r], t_ranges[r], plane[r]);
+        nearest[r] = nearest_plane(scene, rays[r], t_ranges[r]);
         if (nearest[r].found) packet.shrink(static_cast<int>(r), nearest[r].t);
     }
     packet.refresh_t_max();
@@ -156,7 +154,7 @@ void closest_packet(const SceneView& scene, std::span<const Ray> rays, std::span
         }
         packet.refresh_t_max();
     });
-    for (std::size_t r = 0; r < rays.size(); ++r) hits[r] = nearest_hit(scene, rays[r], nearest[r], plane[r], t_ranges[r]);
+    for (std::size_t r = 0; r < rays.size(); ++r) hits[r] = nearest_hit(scene, rays[r], nearest[r], t_ranges[r]);
 }
 
 // occluded() for a packet of rays: a ray leaves the walk at its first blocker.

@@ -318,6 +318,34 @@ TEST(FastPath, EqualDistancesInManyLeavesGoToTheLowestIndexAlsoInPackets) {
     }
 }
 
+TEST(FastPath, APlaneWinsItsTieWithAPrimitiveLyingInIt) {
+    // A triangle lying in the plane z = 0, hit straight down: both at t = 1
+    // exactly. Every query that walks the BVH tests the infinite planes first
+    // and keeps the plane (so a box standing on the floor plane shows the
+    // floor where they touch), rays alone and packets alike. (Lab 1's loop over
+    // every primitive, `accel none`, meets the planes last and keeps the triangle.)
+    SceneData data;
+    data.materials.push_back(Material{});
+    data.primitives.push_back({Triangle{Point3(0.0, 0.0, 0.0), Point3(1.0, 0.0, 0.0), Point3(0.0, 1.0, 0.0)}});
+    data.primitives.push_back({Triangle{Point3(5.0, 0.0, 0.0), Point3(6.0, 0.0, 0.0), Point3(5.0, 1.0, 0.0)}});
+    data.primitives.push_back({Plane{Point3(0.0, 0.0, 0.0), Vec3(0.0, 0.0, 1.0)}});
+    std::vector<Ray> rays;
+    for (int i = 0; i < 16; ++i) rays.push_back(Ray{Point3(0.1 + 0.01 * i, 0.25, 1.0), Vec3(0.0, 0.0, -1.0)});
+    const std::vector<Interval> ranges(rays.size(), Interval{});
+    std::vector<std::optional<Hit>> packed(rays.size());
+    const Scene labs(data);
+    const Scene fast(data, linked_leaf_kernels());
+    fast.closest_hits(rays, ranges, packed);
+    const std::uint32_t plane = 2;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        ASSERT_TRUE(packed[i]);
+        EXPECT_EQ(packed[i]->t, 1.0);
+        EXPECT_EQ(labs.closest_hit(rays[i])->primitive, plane) << i;
+        EXPECT_EQ(fast.closest_hit(rays[i])->primitive, plane) << i;
+        EXPECT_EQ(packed[i]->primitive, plane) << i;
+    }
+}
+
 TEST(FastPath, BlocksOfPixelsRenderWhatPixelsAloneRender) {
     // render() traces 4 x 4 pixel blocks with packets of eye rays and shadow
     // feelers; each pixel traced alone (trace_pixel) must give the same colour
@@ -343,4 +371,29 @@ TEST(FastPath, BlocksOfPixelsRenderWhatPixelsAloneRender) {
             EXPECT_EQ(blocks.stats.refracted, alone.stats.refracted) << entry.path();
         }
     }
+}
+
+TEST(FastPath, BlocksOfPixelsWithAreaLightsRenderWhatPixelsAloneRender) {
+    // Soft shadows: each pixel sample sees its own points on the area light, so
+    // the feelers the look-ahead notes must be the ones of the pixel's sample.
+    // A few hundred small spheres give the scene a BVH of many nodes, which the
+    // packets walk (a scene of a few shapes is one leaf and never uses them).
+    LoadedScene loaded = load_scene(WHITTED_SOURCE_DIR "/scenes/08_soft_shadows.p3f");
+    ASSERT_FALSE(loaded.data.area_lights.empty());
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 300; ++i)
+        loaded.data.primitives.push_back({Sphere{Point3(3.0 * unit(rng), 3.0 * unit(rng), 3.0 * unit(rng)), 0.1}});
+    loaded.data.camera = loaded.data.camera.with_resolution(41, 33);
+    const Scene scene(loaded.data, linked_leaf_kernels());
+    ASSERT_TRUE(scene.queries_packets());
+    RenderSettings settings;
+    settings.samples_per_pixel = 0;
+    const RenderResult blocks = render(scene, settings, 2);
+    const RenderResult alone = render_pixels(scene.camera(), 2, {}, [&](RayStats& stats) -> PixelFunction {
+        return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
+    });
+    EXPECT_EQ(0, std::memcmp(blocks.image.pixels.data(), alone.image.pixels.data(), blocks.image.pixels.size() * sizeof(Color)));
+    EXPECT_EQ(blocks.stats.shadow, alone.stats.shadow);
+    EXPECT_GT(blocks.stats.shadow, 1000u);
 }
