@@ -39,11 +39,17 @@ RayPacket::RayPacket(std::span<const Ray> rays, std::span<const Interval> t_rang
     const int count = static_cast<int>(rays.size());
     active_ = count == kMaxRays ? 0xffffu : (1u << count) - 1u;
     coherent_ = count > 0;
-    // Rays that go different ways on an axis cannot share a test: found before any other work.
+    // Rays that go different ways on an axis cannot share a test: found before any
+    // other work (WideRay makes a component of -0 or +0 a tiny one of its sign).
     for (int i = 1; i < count && coherent_; ++i)
         for (int axis = 0; axis < 3; ++axis)
             if (std::signbit(rays[i].direction[axis]) != std::signbit(rays[0].direction[axis])) coherent_ = false;
     if (!coherent_) return;
+    for (int axis = 0; axis < 3; ++axis) {
+        const bool negative = std::signbit(rays[0].direction[axis]);
+        near_[axis] = 2 * axis + (negative ? 1 : 0);
+        far_[axis] = 2 * axis + (negative ? 0 : 1);
+    }
     constexpr float kInf = std::numeric_limits<float>::infinity();
     for (int i = 0; i < kMaxRays; ++i) {
         if (i >= count) { // a lane without a ray: an empty range, which no box test passes
@@ -53,17 +59,9 @@ RayPacket::RayPacket(std::span<const Ray> rays, std::span<const Interval> t_rang
             continue;
         }
         const WideRay::Numbers n = WideRay::numbers(rays[i], extent, t_ranges[i].min, t_ranges[i].max);
-        if (i == 0) {
-            inverse_scale_ = n.inverse_scale;
-            for (int axis = 0; axis < 3; ++axis) {
-                near_[axis] = 2 * axis + (n.negative[axis] ? 1 : 0);
-                far_[axis] = 2 * axis + (n.negative[axis] ? 0 : 1);
-            }
-        }
-        // The same scale, and the same signs (a component of -0 or +0 becomes a tiny one of its sign).
-        if (n.inverse_scale != inverse_scale_) coherent_ = false;
+        if (i == 0) inverse_scale_ = n.inverse_scale;
+        if (n.inverse_scale != inverse_scale_) coherent_ = false; // distances in other units
         for (int axis = 0; axis < 3; ++axis) {
-            if (near_[axis] != 2 * axis + (n.negative[axis] ? 1 : 0)) coherent_ = false;
             inv_[axis][i] = n.inv[axis];
             origin_entry_[axis][i] = n.origin_entry[axis];
             origin_exit_[axis][i] = n.origin_exit[axis];
@@ -72,7 +70,7 @@ RayPacket::RayPacket(std::span<const Ray> rays, std::span<const Interval> t_rang
         t_max_[i] = n.t_max;
     }
     if (!coherent_) return;
-    // The packet's ranges (lanes without a ray hold values that change no minimum or maximum they enter).
+    // The packet's ranges, over the lanes that hold a ray.
     t_min_low_ = lowest(t_min_, count);
     for (int axis = 0; axis < 3; ++axis) {
         inv_low_[axis] = lowest(inv_[axis], count);

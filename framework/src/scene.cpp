@@ -191,7 +191,7 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
 
 // The same search with the leaf kernels: distances only, and one Hit for the nearest.
 std::optional<Hit> Scene::closest_hit_with_kernels(const Ray& ray, Interval t_range) const {
-    const SceneView view{data_.primitives, bounded_count_, *bvh_};
+    const SceneView view = kernel_view();
     std::optional<Hit> hit = kernels_->closest(view, ray, t_range);
     if (hit) apply_vertex_normals(*hit, ray);
     return hit;
@@ -273,10 +273,12 @@ void for_each_packet(std::size_t size, PacketFn&& packet) {
 
 } // namespace
 
+SceneView Scene::kernel_view() const { return SceneView{data_.primitives, bounded_count_, *bvh_}; }
+
 bool Scene::queries_packets() const {
     // A BVH of one leaf has no boxes for a packet to share.
-    return kernels_ && kernels_->closest_packet && kernels_->occluded_packet && data_.acceleration != Acceleration::none && !grid_ &&
-           !bvh_->nodes().empty();
+    return kernels_ && kernels_->closest_packet && kernels_->occluded_packet && data_.acceleration != Acceleration::none &&
+           !grid_ && !bvh_->nodes().empty();
 }
 
 void Scene::closest_hits(std::span<const Ray> rays, std::span<const Interval> t_ranges,
@@ -285,7 +287,7 @@ void Scene::closest_hits(std::span<const Ray> rays, std::span<const Interval> t_
         for (std::size_t i = 0; i < rays.size(); ++i) hits[i] = closest_hit(rays[i], t_ranges[i]);
         return;
     }
-    const SceneView view{data_.primitives, bounded_count_, *bvh_};
+    const SceneView view = kernel_view();
     for_each_packet(rays.size(), [&](std::size_t first, std::size_t count) {
         kernels_->closest_packet(view, rays.subspan(first, count), t_ranges.subspan(first, count), hits.subspan(first, count));
     });
@@ -298,14 +300,14 @@ void Scene::occluded_rays(std::span<const Ray> rays, std::span<const Interval> t
         for (std::size_t i = 0; i < rays.size(); ++i) blocked[i] = occluded(rays[i], t_ranges[i]);
         return;
     }
-    const SceneView view{data_.primitives, bounded_count_, *bvh_};
+    const SceneView view = kernel_view();
     for_each_packet(rays.size(), [&](std::size_t first, std::size_t count) {
         kernels_->occluded_packet(view, rays.subspan(first, count), t_ranges.subspan(first, count), blocked.subspan(first, count));
     });
 }
 
 bool Scene::occluded_with_kernels(const Ray& ray, Interval t_range) const {
-    return kernels_->occluded(SceneView{data_.primitives, bounded_count_, *bvh_}, ray, t_range);
+    return kernels_->occluded(kernel_view(), ray, t_range);
 }
 
 } // namespace whitted

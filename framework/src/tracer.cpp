@@ -177,12 +177,12 @@ bool Tracer::occluded(const Ray& ray, double distance) const {
     if (!e.within_budget()) return true; // over budget: no more light is gathered for this pixel
     e.stats.count(RayKind::shadow);
     if (const std::optional<bool> blocked = e.blocked_ahead(ray, distance)) return *blocked;
-    return e.scene.occluded(ray, Interval{0.0, distance * (1.0 - 1e-6)});
+    return e.scene.occluded(ray, feeler_range(distance));
 }
 
 // occluded() writing the feeler into the tree.
 bool Tracer::Engine::occluded_recorded(const Ray& ray, double distance) {
-    const Interval t_range{0.0, distance * (1.0 - 1e-6)};
+    const Interval t_range = feeler_range(distance);
     if (!within_budget()) {
         record_feeler(ray, t_range, distance, RayFate::over_budget, true);
         return true;

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -52,6 +53,8 @@ struct Tracer::Engine {
         std::vector<Interval> ranges;
         std::vector<std::optional<Hit>> hits;
         std::vector<Feeler*> feelers;
+        std::unique_ptr<bool[]> blocked; // not vector<bool>: occluded_rays() writes a span of bool
+        std::size_t blocked_room = 0;
     };
     Scratch scratch{};
     const Ahead* ahead = nullptr; // the current pixel's answers, while trace_pixels() traces it
@@ -87,6 +90,10 @@ struct Tracer::Engine {
     [[gnu::cold, gnu::noinline]] int record_ray(const Ray& ray, Interval t_range, int depth, RayKind kind, const Color& weight);
     [[gnu::cold, gnu::noinline]] void record_feeler(const Ray& ray, Interval t_range, double distance, RayFate fate, bool blocked);
 };
+
+/// The range of a shadow feeler towards a light `distance` away: it stops a hair
+/// (a millionth) short of the light (Tracer::occluded()).
+inline Interval feeler_range(double distance) { return Interval{0.0, distance * (1.0 - 1e-6)}; }
 
 /// True when both are the very same bits (a query answered ahead must be this one).
 inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }

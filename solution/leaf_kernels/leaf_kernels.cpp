@@ -113,10 +113,16 @@ std::optional<Hit> closest(const SceneView& scene, const Ray& ray, Interval t_ra
     return nearest_hit(scene, ray, nearest, t_range);
 }
 
-// The scene's occlusion query: any hit will do, so the first one ends it.
-bool occluded(const SceneView& scene, const Ray& ray, Interval t_range) {
+// True when one of the infinite planes lies along the ray within t_range.
+bool plane_blocks(const SceneView& scene, const Ray& ray, Interval t_range) {
     for (std::size_t i = scene.bounded_count; i < scene.primitives.size(); ++i)
         if (distance(ray, scene.primitives[i], t_range) != kMiss) return true;
+    return false;
+}
+
+// The scene's occlusion query: any hit will do, so the first one ends it.
+bool occluded(const SceneView& scene, const Ray& ray, Interval t_range) {
+    if (plane_blocks(scene, ray, t_range)) return true;
     bool blocked = false;
     scene.bvh.traverse<false>(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
         for (std::uint32_t i = first; i < first + count; ++i) {
@@ -146,13 +152,17 @@ void closest_packet(const SceneView& scene, std::span<const Ray> rays, std::span
     }
     packet.refresh_t_max();
     scene.bvh.traverse_packet(packet, [&](std::uint32_t first, std::uint32_t count, unsigned which) {
+        bool shrunk = false;
         for (; which != 0; which &= which - 1) {
             const int r = __builtin_ctz(which);
             const double before = nearest[r].t;
             for (std::uint32_t i = first; i < first + count; ++i) nearest[r].test(rays[r], scene.primitives[i], i, t_ranges[r].min);
-            if (nearest[r].t != before) packet.shrink(r, nearest[r].t);
+            if (nearest[r].t != before) {
+                packet.shrink(r, nearest[r].t);
+                shrunk = true;
+            }
         }
-        packet.refresh_t_max();
+        if (shrunk) packet.refresh_t_max();
     });
     for (std::size_t r = 0; r < rays.size(); ++r) hits[r] = nearest_hit(scene, rays[r], nearest[r], t_ranges[r]);
 }
@@ -167,9 +177,7 @@ void occluded_packet(const SceneView& scene, std::span<const Ray> rays, std::spa
     }
     unsigned done = 0;
     for (std::size_t r = 0; r < rays.size(); ++r) {
-        blocked[r] = false;
-        for (std::size_t i = scene.bounded_count; i < scene.primitives.size() && !blocked[r]; ++i)
-            blocked[r] = distance(rays[r], scene.primitives[i], t_ranges[r]) != kMiss;
+        blocked[r] = plane_blocks(scene, rays[r], t_ranges[r]);
         if (blocked[r]) done |= 1u << r;
     }
     if (done != 0) packet.retire(done);

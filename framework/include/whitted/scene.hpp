@@ -58,6 +58,7 @@ struct QueryCost {
 class WideBvh;
 class UniformGrid;
 struct LeafKernels;
+struct SceneView;
 struct RemoteSceneQueries;
 
 class Scene {
@@ -132,6 +133,7 @@ class Scene {
     QueryCost query_cost(const Ray& ray, Interval t_range, bool any_hit) const;
 
   private:
+    SceneView kernel_view() const; // what the leaf kernels see of this scene
     std::optional<Hit> closest_hit_with_kernels(const Ray& ray, Interval t_range) const;
     bool walks_lab_bvh() const { return bvh_choice_ == BvhChoice::lab && data_.acceleration == Acceleration::bvh; }
     bool occluded_with_kernels(const Ray& ray, Interval t_range) const;

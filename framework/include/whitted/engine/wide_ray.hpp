@@ -76,10 +76,8 @@ class WideRay {
 
     /// Prepares `ray` for boxes built by WideBvh (faces moved outwards) within a
     /// scene whose coordinates are at most `extent` in size, for t in (t_min, t_max).
-    WideRay(const Ray& ray, double extent, double t_min, double t_max) : WideRay(numbers(ray, extent, t_min, t_max)) {}
-
-    /// A ray prepared from its numbers.
-    explicit WideRay(const Numbers& n) {
+    WideRay(const Ray& ray, double extent, double t_min, double t_max) {
+        const Numbers n = numbers(ray, extent, t_min, t_max);
         for (int axis = 0; axis < 3; ++axis) {
             for (int lane = 0; lane < 4; ++lane) {
                 inv_[axis][lane] = n.inv[axis];
