@@ -260,7 +260,14 @@ TEST_P(FastPath, PacketsOfRaysGetTheAnswersOfRaysAlone) {
     int hits = 0, blocked = 0, misses = 0, together = 0;
     for (int b = 0; b < 300; ++b) {
         const bool feelers = b % 2 == 1;
-        const std::vector<Ray> rays = bundle(rng, setting.offset, setting.scale, feelers, b % 3 == 0 ? 0.05 : 1.5);
+        std::vector<Ray> rays = bundle(rng, setting.offset, setting.scale, feelers, b % 3 == 0 ? 0.05 : 1.5);
+        // Directions of other lengths (a packet scales them by one power of two),
+        // and some along a plane (a component of 0, which the box tests replace).
+        const double length = b % 5 == 0 ? 0.125 : b % 5 == 1 ? 48.0 : 1.0;
+        for (Ray& ray : rays) {
+            if (b % 7 == 0) ray.direction.y = 0.0;
+            ray.direction *= length;
+        }
         const Interval eye_range{};
         std::vector<Interval> ranges(rays.size(), eye_range);
         for (std::size_t i = 0; i < rays.size(); ++i)
