@@ -8,6 +8,7 @@
 // this does nothing and the pages fault in as they are written.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <future>
@@ -42,6 +43,18 @@ inline std::future<void> prefault_behind(void* begin, std::size_t bytes) {
         return std::async(std::launch::async, [begin, bytes] { prefault(begin, bytes); });
     } catch (const std::system_error&) {
         return {}; // no thread to be had: the pages fault in as they are written
+    }
+}
+
+/// prefault_behind() for a block of at most `most` bytes whose size takes work to
+/// find: `bytes()` finds it on the other thread too, off this one's path.
+template <class Bytes>
+std::future<void> prefault_behind(void* begin, std::size_t most, Bytes bytes) {
+    if (most < (std::size_t{1} << 20)) return {};
+    try {
+        return std::async(std::launch::async, [begin, most, bytes] { prefault(begin, std::min(most, bytes())); });
+    } catch (const std::system_error&) {
+        return {};
     }
 }
 

@@ -35,25 +35,28 @@ bool is_text(std::string_view word) {
     return true;
 }
 
+// How many lines start with "s " (the first line, too).
+std::size_t sphere_lines(std::string_view text) {
+    std::size_t count = text.starts_with("s ") ? 1 : 0;
+    for (const char* c = text.data(), *end = c + text.size();
+         (c = static_cast<const char*>(std::memchr(c, '\n', static_cast<std::size_t>(end - c)))); ++c)
+        if (end - c > 2 && c[1] == 's' && c[2] == ' ') ++count;
+    return count;
+}
+
 } // namespace
 
 SceneBuilder::SceneBuilder(TokenStream& tokens, const SceneLimits& limits) : tokens_(tokens), limits_(limits) {
-    // Big scene files hold about one primitive a line (a sphere, a vertex, a face): room for
-    // that many, so that the list is never copied as it grows. Room left unused is never touched,
-    // and a file of short lines (comments) gets no more than about three times its size.
+    // Room for a primitive every 32 bytes of the file (a sphere line is longer), so
+    // that the list is never copied as it grows: room left unused is never touched,
+    // so it costs address space, not memory.
     const std::string_view text = tokens.text();
-    std::size_t lines = 1, sphere_lines = 0;
-    for (const char* c = text.data(), *end = c + text.size();
-         (c = static_cast<const char*>(std::memchr(c, '\n', static_cast<std::size_t>(end - c)))); ++c) {
-        ++lines;
-        if (end - c > 2 && c[1] == 's' && c[2] == ' ') ++sphere_lines;
-    }
-    data().primitives.reserve(std::min({lines, text.size() / 32 + 1, limits.max_primitives}));
-    // The spheres' pages are mapped in on another thread while this one parses (one line,
-    // one primitive). Pages for the triangles of polygons are not: their count is not
-    // known from the lines, and pages they would never fill would only cost memory.
-    const std::size_t likely = std::min(data().primitives.capacity(), sphere_lines);
-    prefaulted_ = prefault_behind(data().primitives.data(), likely * sizeof(Primitive));
+    data().primitives.reserve(std::min(text.size() / 32 + 1, limits.max_primitives));
+    // The spheres' pages (one a line starting "s ") are mapped in on another thread
+    // while this one parses; that thread counts them too. Pages for the triangles of
+    // polygons are not: their count is not known from the lines.
+    const std::size_t room = data().primitives.capacity() * sizeof(Primitive);
+    prefaulted_ = prefault_behind(data().primitives.data(), room, [text] { return sphere_lines(text) * sizeof(Primitive); });
 }
 
 void SceneBuilder::warn(const Token& at, const std::string& message) {
