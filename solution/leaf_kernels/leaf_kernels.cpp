@@ -9,6 +9,8 @@
 #include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/engine/hit_distances.hpp"
 
+#include "screens.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -55,6 +57,16 @@ std::optional<Hit> hit_at(const Ray& ray, const Primitive& primitive, double t, 
     return hit;
 }
 
+// Primitives i and i + 1 when both are triangles (the pair lab 1's test takes at once, screens.hpp).
+struct TwoTriangles {
+    const Triangle* a = nullptr;
+    const Triangle* b = nullptr;
+
+    TwoTriangles(const SceneView& scene, std::uint32_t i)
+        : a(std::get_if<Triangle>(&scene.primitives[i].shape)), b(std::get_if<Triangle>(&scene.primitives[i + 1].shape)) {}
+    explicit operator bool() const { return a && b; }
+};
+
 // One ray's nearest hit so far: which primitive, how far, where on a triangle.
 struct Nearest {
     double t;                          // the search's upper end until something is found
@@ -69,15 +81,44 @@ struct Nearest {
     // whatever order the leaves come in (a ray alone and a packet of rays walk
     // them in different orders, and must agree), and a plane, tested first, wins
     // over any primitive of the BVH (a box standing on the floor plane shows the floor).
-    void test(const Ray& ray, const Primitive& primitive, std::uint32_t i, double t_min) {
-        const double limit = index != kNoPrimitive && i < index ? std::nextafter(t, kMiss) : t;
+    [[gnu::always_inline]] void test(const Ray& ray, const Primitive& primitive, std::uint32_t i, double t_min) {
         TriangleDistance candidate;
-        if (const double hit_t = distance(ray, primitive, Interval{t_min, limit}, candidate); hit_t != kMiss) {
+        if (const double hit_t = distance(ray, primitive, Interval{t_min, limit_for(i)}, candidate); hit_t != kMiss) {
             t = hit_t;
             index = i;
             found = true;
             on_triangle = candidate;
         }
+    }
+
+    // The limit test() searches primitive i up to.
+    double limit_for(std::uint32_t i) const { return index != kNoPrimitive && i < index ? std::nextafter(t, kMiss) : t; }
+
+    // Tests the primitives of a leaf, [first, first + count): neighbouring
+    // triangles two at a time (screens.hpp), the same answers as test().
+    [[gnu::always_inline]] void test_leaf(const Ray& ray, const SceneView& scene, std::uint32_t first, std::uint32_t count, double t_min) {
+        const std::uint32_t end = first + count;
+        std::uint32_t i = first;
+#if defined(__SSE2__)
+        for (; i + 1 < end; i += 2) {
+            const TwoTriangles two(scene, i);
+            if (!two) {
+                test(ray, scene.primitives[i], i, t_min);
+                test(ray, scene.primitives[i + 1], i + 1, t_min);
+                continue;
+            }
+            // The widest range either search may have: to t and a hair beyond.
+            const screens::TrianglePair pair = screens::triangle_pair_distances(ray, *two.a, *two.b, Interval{t_min, std::nextafter(t, kMiss)});
+            for (unsigned lane = 0; lane < 2; ++lane) {
+                if (!(pair.hit >> lane & 1u) || !(pair.t[lane] < limit_for(i + lane))) continue;
+                t = pair.t[lane];
+                index = i + lane;
+                found = true;
+                on_triangle = TriangleDistance{pair.t[lane], pair.b1[lane], pair.b2[lane]};
+            }
+        }
+#endif
+        for (; i < end; ++i) test(ray, scene.primitives[i], i, t_min);
     }
 };
 
@@ -107,7 +148,7 @@ std::optional<Hit> nearest_hit(const SceneView& scene, const Ray& ray, const Nea
 std::optional<Hit> closest(const SceneView& scene, const Ray& ray, Interval t_range) {
     Nearest nearest = nearest_plane(scene, ray, t_range);
     scene.bvh.traverse(ray, t_range.min, nearest.t, [&](std::uint32_t first, std::uint32_t count, double) {
-        for (std::uint32_t i = first; i < first + count; ++i) nearest.test(ray, scene.primitives[i], i, t_range.min);
+        nearest.test_leaf(ray, scene, first, count, t_range.min);
         return nearest.t;
     });
     return nearest_hit(scene, ray, nearest, t_range);
@@ -120,18 +161,32 @@ bool plane_blocks(const SceneView& scene, const Ray& ray, Interval t_range) {
     return false;
 }
 
+// True when a primitive of the leaf [first, first + count) lies along the ray
+// within t_range; neighbouring triangles are tested two at a time (screens.hpp).
+[[gnu::always_inline]] inline bool leaf_blocks(const Ray& ray, const SceneView& scene, std::uint32_t first, std::uint32_t count, Interval t_range) {
+    const std::uint32_t end = first + count;
+    std::uint32_t i = first;
+#if defined(__SSE2__)
+    for (; i + 1 < end; i += 2) {
+        if (const TwoTriangles two(scene, i); two) {
+            if (screens::triangle_pair_distances(ray, *two.a, *two.b, t_range).hit != 0) return true;
+        } else if (distance(ray, scene.primitives[i], t_range) != kMiss || distance(ray, scene.primitives[i + 1], t_range) != kMiss) {
+            return true;
+        }
+    }
+#endif
+    for (; i < end; ++i)
+        if (distance(ray, scene.primitives[i], t_range) != kMiss) return true;
+    return false;
+}
+
 // The scene's occlusion query: any hit will do, so the first one ends it.
 bool occluded(const SceneView& scene, const Ray& ray, Interval t_range) {
     if (plane_blocks(scene, ray, t_range)) return true;
     bool blocked = false;
     scene.bvh.traverse<false>(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            if (distance(ray, scene.primitives[i], Interval{t_range.min, t_max}) != kMiss) {
-                blocked = true;
-                return -1.0;
-            }
-        }
-        return t_max;
+        blocked = leaf_blocks(ray, scene, first, count, Interval{t_range.min, t_max});
+        return blocked ? -1.0 : t_max;
     });
     return blocked;
 }
@@ -156,7 +211,7 @@ void closest_packet(const SceneView& scene, std::span<const Ray> rays, std::span
         for (; which != 0; which &= which - 1) {
             const int r = __builtin_ctz(which);
             const double before = nearest[r].t;
-            for (std::uint32_t i = first; i < first + count; ++i) nearest[r].test(rays[r], scene.primitives[i], i, t_ranges[r].min);
+            nearest[r].test_leaf(rays[r], scene, first, count, t_ranges[r].min);
             if (nearest[r].t != before) {
                 packet.shrink(r, nearest[r].t);
                 shrunk = true;
@@ -185,12 +240,9 @@ void occluded_packet(const SceneView& scene, std::span<const Ray> rays, std::spa
         unsigned found = 0;
         for (; which != 0; which &= which - 1) {
             const int r = __builtin_ctz(which);
-            for (std::uint32_t i = first; i < first + count; ++i) {
-                if (distance(rays[r], scene.primitives[i], t_ranges[r]) != kMiss) {
-                    blocked[r] = true;
-                    found |= 1u << r;
-                    break;
-                }
+            if (leaf_blocks(rays[r], scene, first, count, t_ranges[r])) {
+                blocked[r] = true;
+                found |= 1u << r;
             }
         }
         if (found != 0) packet.retire(found);
