@@ -2,7 +2,9 @@
 // Spheres, planes and triangles go through the reference lab 1's own distance
 // functions (whitted/engine/hit_distances.hpp, defined in solution/01), boxes and
 // cones through the framework's intersections, so the nearest primitive and its
-// distance are the labs' own, bit for bit, by construction.
+// distance are the labs' own, bit for bit, by construction. The one exception,
+// two neighbouring triangles tested at once (screens.hpp), repeats lab 1's
+// triangle test operation for operation, and a test holds it to that.
 //
 // Why here and not in framework/: these are the answers to lab 1, and the
 // student handout ships framework/ but not solution/.
