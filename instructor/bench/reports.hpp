@@ -49,7 +49,8 @@ struct BaselineCheck {
 };
 
 /// Beyond this factor over the baseline (and this many seconds slower) a time is a regression;
-/// a render's ratio to Embree, beyond kRatioMargin (Embree's run takes the machine's drift out of it).
+/// a render's ratio to Embree, beyond kRatioMargin and that many seconds over what the baseline's
+/// ratio gives (Embree's run takes the machine's drift out of it).
 inline constexpr double kRegressionMargin = 1.25;
 inline constexpr double kRegressionFloorSeconds = 0.005;
 inline constexpr double kRatioMargin = 1.15;
