@@ -16,10 +16,10 @@ using namespace whitted;
 
 namespace {
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+[[maybe_unused]] bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // A triangle of random size and place; every fifth without area (a corner on the opposite edge's line).
-Triangle random_triangle(std::mt19937& rng, int i) {
+[[maybe_unused]] Triangle random_triangle(std::mt19937& rng, int i) {
     std::uniform_real_distribution<double> position(-5.0, 5.0), fraction(0.0, 1.0);
     const double scale = std::ldexp(1.0, static_cast<int>(fraction(rng) * 40.0) - 20);
     Triangle triangle{scale * Point3(position(rng), position(rng), position(rng)),
@@ -30,7 +30,7 @@ Triangle random_triangle(std::mt19937& rng, int i) {
 }
 
 // A ray at a point of the triangle: inside, on an edge, or at a corner, from a random side.
-Ray ray_at(std::mt19937& rng, const Triangle& triangle, int i) {
+[[maybe_unused]] Ray ray_at(std::mt19937& rng, const Triangle& triangle, int i) {
     std::uniform_real_distribution<double> position(-5.0, 5.0), fraction(0.0, 1.0);
     double b1 = fraction(rng), b2 = fraction(rng) * (1.0 - b1);
     if (i % 3 == 1) b2 = 0.0;                  // on the edge p0-p1
@@ -45,6 +45,9 @@ Ray ray_at(std::mt19937& rng, const Triangle& triangle, int i) {
 } // namespace
 
 TEST(TrianglePairs, SayWhatLabOnesTriangleTestSaysOfEach) {
+#if !defined(__SSE2__)
+    GTEST_SKIP() << "the pairs are SSE2 code; without SSE2 the kernels test one triangle at a time";
+#else
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> fraction(0.0, 1.0);
     int hits = 0, misses = 0, cut_by_range = 0;
@@ -74,4 +77,5 @@ TEST(TrianglePairs, SayWhatLabOnesTriangleTestSaysOfEach) {
     EXPECT_GT(hits, 50000);
     EXPECT_GT(misses, 50000);
     EXPECT_GT(cut_by_range, 20000);
+#endif
 }
