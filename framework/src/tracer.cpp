@@ -160,7 +160,10 @@ Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const 
     // (lab 9) when the camera has an aperture; a pinhole camera's picture never changes.
     const Camera& camera = e.scene.camera();
     const bool lens = camera.aperture > 0.0 && e.settings.stage >= stage_number(Stage::depth_of_field);
-    const Ray eye_ray = lens ? thin_lens_ray(camera, x, y, sample_numbers(sample, SampleUse::lens)) : primary_ray(camera, x, y);
+    // (trace_pixels() made this very pinhole ray already, from the same x and y.)
+    const Ray eye_ray = lens     ? thin_lens_ray(camera, x, y, sample_numbers(sample, SampleUse::lens))
+                        : e.ahead ? e.ahead->eye
+                                  : primary_ray(camera, x, y);
     const Color color = trace(eye_ray, 1, RayKind::eye, Color(1.0));
     if (e.pixel_cut_short) ++e.stats.pixels_cut_short;
     return color;
