@@ -47,7 +47,8 @@ inline std::future<void> prefault_behind(void* begin, std::size_t bytes) {
 }
 
 /// prefault_behind() for a block of at most `most` bytes whose size takes work to
-/// find: `bytes()` finds it on the other thread too, off this one's path.
+/// find: `bytes()` finds it on the other thread too, off this one's path (what it
+/// reads must outlive the returned future, as the block must).
 template <class Bytes>
 std::future<void> prefault_behind(void* begin, std::size_t most, Bytes bytes) {
     if (most < (std::size_t{1} << 20)) return {};

@@ -96,7 +96,7 @@ void RayPacket::lanes_one_by_one(std::span<const Ray> rays, double extent) {
 }
 
 bool RayPacket::lanes_at_once(std::span<const Ray> rays, double extent) {
-#if defined(__SSE2__)
+#if defined(__SSE2__) && defined(__SSE2_MATH__) && __FLT_EVAL_METHOD__ == 0 // WideRay::numbers() in SSE2 doubles too
     // WideRay::numbers() for four rays at a time, the same operations in the same
     // order (so the same numbers), when every ray's largest direction component
     // has ray 0's binary exponent, the one scale of the packet, and is an
@@ -161,6 +161,20 @@ bool RayPacket::lanes_at_once(std::span<const Ray> rays, double extent) {
     (void)rays, (void)extent;
     return false;
 #endif
+}
+
+WideRay::Numbers RayPacket::lane(int i) const {
+    WideRay::Numbers n{};
+    for (int axis = 0; axis < 3; ++axis) {
+        n.inv[axis] = inv_[axis][i];
+        n.origin_entry[axis] = origin_entry_[axis][i];
+        n.origin_exit[axis] = origin_exit_[axis][i];
+        n.negative[axis] = near_[axis] != 2 * axis;
+    }
+    n.inverse_scale = inverse_scale_;
+    n.t_min = t_min_[i];
+    n.t_max = t_max_[i];
+    return n;
 }
 
 void RayPacket::refresh_t_max() {

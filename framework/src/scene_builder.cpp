@@ -48,8 +48,9 @@ std::size_t sphere_lines(std::string_view text) {
 
 SceneBuilder::SceneBuilder(TokenStream& tokens, const SceneLimits& limits) : tokens_(tokens), limits_(limits) {
     // Room for a primitive every 32 bytes of the file (a sphere line is longer), so
-    // that the list is never copied as it grows: room left unused is never touched,
-    // so it costs address space, not memory.
+    // that the list is rarely copied as it grows (a mesh's short faces and a polygon
+    // of many corners can outgrow it). Room left unused is never touched: it costs
+    // address space (which a `ulimit -v` or strict overcommit counts), not memory.
     const std::string_view text = tokens.text();
     data().primitives.reserve(std::min(text.size() / 32 + 1, limits.max_primitives));
     // The spheres' pages (one a line starting "s ") are mapped in on another thread

@@ -101,7 +101,7 @@ struct Nearest {
     [[gnu::always_inline]] void test_leaf(const Ray& ray, const SceneView& scene, std::uint32_t first, std::uint32_t count, double t_min) {
         const std::uint32_t end = first + count;
         std::uint32_t i = first;
-#if defined(__SSE2__)
+#if WHITTED_PAIR_LANES
         for (; i + 1 < end; i += 2) {
             const TwoTriangles two(scene, i);
             if (!two) {
@@ -168,7 +168,7 @@ bool plane_blocks(const SceneView& scene, const Ray& ray, Interval t_range) {
 [[gnu::always_inline]] inline bool leaf_blocks(const Ray& ray, const SceneView& scene, std::uint32_t first, std::uint32_t count, Interval t_range) {
     const std::uint32_t end = first + count;
     std::uint32_t i = first;
-#if defined(__SSE2__)
+#if WHITTED_PAIR_LANES
     for (; i + 1 < end; i += 2) {
         if (const TwoTriangles two(scene, i); two) {
             if (screens::triangle_pair_distances(ray, *two.a, *two.b, t_range).hit != 0) return true;

@@ -14,13 +14,19 @@
 #include "whitted/ray.hpp"
 #include "whitted/shapes.hpp"
 
-#if defined(__SSE2__)
+// Pairs need double arithmetic done in SSE2 everywhere (x86-64): a 32-bit x87
+// build rounds the lab's doubles in extended precision, and the lanes would not
+// hold the same bits. Elsewhere the kernels test one triangle at a time.
+#if defined(__SSE2__) && defined(__SSE2_MATH__) && __FLT_EVAL_METHOD__ == 0
+#define WHITTED_PAIR_LANES 1
 #include <emmintrin.h>
+#else
+#define WHITTED_PAIR_LANES 0
 #endif
 
 namespace whitted::screens {
 
-#if defined(__SSE2__)
+#if WHITTED_PAIR_LANES
 namespace detail {
 
 // Three doubles of each of two primitives, lane 0 from `a`, lane 1 from `b`.

@@ -325,6 +325,40 @@ TEST(FastPath, EqualDistancesInManyLeavesGoToTheLowestIndexAlsoInPackets) {
     }
 }
 
+TEST(FastPath, TiesInLeavesMetOutOfIndexOrderGoToTheLowestIndex) {
+    // n copies of one triangle in the plane z = 0, every third in place and the
+    // others moved along x by 0.001 i: their boxes differ, so the walk meets
+    // their leaves in an order that is not their indices', and the leaf kernels
+    // test neighbours two at a time. A ray straight down meets every copy under
+    // it at t = 3 exactly; the labs' loop over all of them keeps the lowest index.
+    int compared = 0;
+    for (int n = 2; n < 120; ++n) {
+        SceneData data;
+        data.materials.push_back(Material{});
+        for (int i = 0; i < n; ++i) {
+            const Vec3 shift(i % 3 == 0 ? 0.0 : 0.001 * i, 0.0, 0.0);
+            data.primitives.push_back({Triangle{Point3(-1.0, -1.0, 0.0) + shift, Point3(1.0, -1.0, 0.0) + shift,
+                                                Point3(0.0, 1.0, 0.0) + shift}});
+        }
+        const Scene fast(data, linked_leaf_kernels());
+        std::vector<Ray> rays;
+        for (int k = 0; k < 16; ++k) rays.push_back(Ray{Point3(-0.3 + 0.04 * k, -0.2 + 0.03 * k, 3.0), Vec3(0.0, 0.0, -1.0)});
+        const std::vector<Interval> ranges(rays.size(), Interval{});
+        std::vector<std::optional<Hit>> packed(rays.size());
+        fast.closest_hits(rays, ranges, packed);
+        for (std::size_t k = 0; k < rays.size(); ++k) {
+            const auto expected = closest_hit(rays[k], fast.primitives(), Interval{});
+            const auto alone = fast.closest_hit(rays[k]);
+            ASSERT_TRUE(expected && alone && packed[k]) << n << " copies, ray " << k;
+            EXPECT_EQ(alone->primitive, expected->primitive) << n << " copies, ray " << k;
+            EXPECT_EQ(packed[k]->primitive, expected->primitive) << n << " copies, ray " << k;
+            EXPECT_EQ(alone->t, 3.0);
+            ++compared;
+        }
+    }
+    EXPECT_EQ(compared, 118 * 16);
+}
+
 TEST(FastPath, APlaneWinsItsTieWithAPrimitiveLyingInIt) {
     // A triangle lying in the plane z = 0, hit straight down: both at t = 1
     // exactly. Every query that walks the BVH tests the infinite planes first

@@ -4,12 +4,17 @@
 #include "whitted/labs.hpp"
 #include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/scene.hpp"
+#include "whitted/engine/ray_packet.hpp"
 #include "whitted/engine/wide_ray.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <random>
+#include <cstring>
+#include <cstdint>
+#include <vector>
 
 using namespace whitted;
 
@@ -141,4 +146,54 @@ TEST(WideRay, EightBoxesAnswerInTheirOwnBits) {
     float t_entry[8];
     EXPECT_EQ(wide.hit_boxes(bounds, t_entry), 0b1101'1011u);
     for (int k : {0, 1, 3, 4, 6, 7}) EXPECT_NEAR(t_entry[k], 2.0 * (k + 1), 1e-5) << "box " << k;
+}
+
+TEST(WideRay, PacketLanesHoldWhatEachRayAloneComputes) {
+    // RayPacket computes its lanes four rays at a time; each lane must hold the
+    // very numbers WideRay::numbers() gives its ray (a margin that is too small
+    // errs towards "miss" and no answer-level test would see it). Directions of
+    // random binary exponents, with components of +-0, subnormals and 2^-62 or so.
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> unit(0.5, 1.0), position(-40.0, 40.0);
+    std::uniform_int_distribution<int> exponent(-60, 60), count(1, RayPacket::kMaxRays), special(0, 9);
+    const auto bits = [](auto value) {
+        std::uint64_t b = 0;
+        std::memcpy(&b, &value, sizeof value);
+        return b;
+    };
+    int packets = 0;
+    for (int p = 0; p < 20000; ++p) {
+        const int e = exponent(rng), n = count(rng);
+        const Vec3 sign(p & 1 ? -1.0 : 1.0, p & 2 ? -1.0 : 1.0, p & 4 ? -1.0 : 1.0);
+        std::vector<Ray> rays;
+        std::vector<Interval> ranges;
+        for (int i = 0; i < n; ++i) {
+            Vec3 d = sign * Vec3(unit(rng), unit(rng), unit(rng));
+            d[i % 3] = sign[i % 3]; // the largest component sets the packet's one scale
+            const int odd = special(rng);
+            if (odd == 0) d[(i + 1) % 3] = sign[(i + 1) % 3] * 0.0;
+            if (odd == 1) d[(i + 2) % 3] = sign[(i + 2) % 3] * 0x1p-1070;
+            if (odd == 2) d[(i + 1) % 3] = sign[(i + 1) % 3] * std::ldexp(1.0, -62 - e);
+            rays.push_back(Ray{std::ldexp(position(rng), p % 7) * Point3(unit(rng), -unit(rng), unit(rng)), std::ldexp(1.0, e) * d});
+            ranges.push_back(p % 3 == 0 ? Interval{} : Interval{0.25 * unit(rng), std::ldexp(unit(rng), 4 - e)});
+        }
+        const double extent = std::ldexp(1.0, p % 11);
+        const RayPacket packet(rays, ranges, extent);
+        ASSERT_TRUE(packet.coherent()) << "packet " << p;
+        ++packets;
+        for (int i = 0; i < n; ++i) {
+            const WideRay::Numbers alone = WideRay::numbers(rays[i], extent, ranges[i].min, ranges[i].max);
+            const WideRay::Numbers lane = packet.lane(i);
+            ASSERT_EQ(bits(alone.inverse_scale), bits(lane.inverse_scale)) << "packet " << p << " ray " << i;
+            ASSERT_EQ(bits(alone.t_min), bits(lane.t_min)) << "packet " << p << " ray " << i;
+            ASSERT_EQ(bits(alone.t_max), bits(lane.t_max)) << "packet " << p << " ray " << i;
+            for (int axis = 0; axis < 3; ++axis) {
+                ASSERT_EQ(alone.negative[axis], lane.negative[axis]) << "packet " << p << " ray " << i;
+                ASSERT_EQ(bits(alone.inv[axis]), bits(lane.inv[axis])) << "packet " << p << " ray " << i << " axis " << axis;
+                ASSERT_EQ(bits(alone.origin_entry[axis]), bits(lane.origin_entry[axis])) << "packet " << p << " ray " << i;
+                ASSERT_EQ(bits(alone.origin_exit[axis]), bits(lane.origin_exit[axis])) << "packet " << p << " ray " << i;
+            }
+        }
+    }
+    EXPECT_EQ(packets, 20000);
 }

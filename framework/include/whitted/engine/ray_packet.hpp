@@ -35,6 +35,8 @@ class RayPacket {
 
     /// True when the rays may walk together (same direction signs and scale).
     bool coherent() const { return coherent_; }
+    /// Lane i's numbers, which are WideRay::numbers() of rays[i] (of a coherent packet; for tests).
+    WideRay::Numbers lane(int i) const;
     /// The rays still searching, one bit each.
     unsigned active() const { return active_; }
     /// Ends the search of `rays` (bits): an occlusion query that found its answer.
