@@ -47,16 +47,11 @@ RenderResult render_blocks(const Camera& camera, int threads, const ProgressCall
     std::atomic<int> tiles_done{0};
     std::mutex progress_mutex;
     threads = tile_threads(camera.res_x, camera.res_y, threads);
-    // Each thread counts its rays on cache lines of its own (side by side, every
-    // count would send the line to and fro between the cores).
-    struct alignas(64) ThreadStats {
-        RayStats stats;
-    };
-    std::vector<ThreadStats> stats(static_cast<std::size_t>(threads));
+    std::vector<PerThread<RayStats>> stats(static_cast<std::size_t>(threads));
     const auto start = std::chrono::steady_clock::now();
 
     result.threads = for_each_tile(camera.res_x, camera.res_y, threads, [&](int thread_index) -> TileFunction {
-        return [&, block = make_block_function(stats[static_cast<std::size_t>(thread_index)].stats)](const Tile& tile) {
+        return [&, block = make_block_function(stats[static_cast<std::size_t>(thread_index)].value)](const Tile& tile) {
             constexpr int kBlock = 4;
             Vec2 positions[kBlock * kBlock];
             Color colors[kBlock * kBlock];
@@ -82,7 +77,7 @@ RenderResult render_blocks(const Camera& camera, int threads, const ProgressCall
         };
     });
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (const ThreadStats& s : stats) result.stats += s.stats;
+    for (const PerThread<RayStats>& s : stats) result.stats += s.value;
     return result;
 }
 

@@ -151,16 +151,11 @@ TrafficResult shoot_ray_traffic(const RayQueries& scene, const SceneData& data, 
                                 bool eye_packets) {
     const Camera& camera = data.camera;
     threads = tile_threads(camera.res_x, camera.res_y, threads);
-    // Each thread counts on cache lines of its own (side by side, every count
-    // would send the line to and fro between the cores, slowing both engines).
-    struct alignas(64) ThreadCounts {
-        RayCounts counts;
-    };
-    std::vector<ThreadCounts> counts(static_cast<std::size_t>(threads));
+    std::vector<PerThread<RayCounts>> counts(static_cast<std::size_t>(threads));
     const auto start = std::chrono::steady_clock::now();
     for_each_tile(camera.res_x, camera.res_y, threads, [&](int thread_index) -> TileFunction {
         set_denormals_to_zero();
-        return [&, tracer = TrafficTracer(scene, data, max_depth, counts[static_cast<std::size_t>(thread_index)].counts)](const Tile& tile) {
+        return [&, tracer = TrafficTracer(scene, data, max_depth, counts[static_cast<std::size_t>(thread_index)].value)](const Tile& tile) {
             if (!eye_packets) {
                 for (int row = tile.y0; row < tile.y1; ++row) {
                     const int y = camera.res_y - 1 - row; // image rows go top-down, viewport y bottom-up
@@ -185,8 +180,8 @@ TrafficResult shoot_ray_traffic(const RayQueries& scene, const SceneData& data, 
     TrafficResult result;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.threads = threads;
-    for (const ThreadCounts& thread : counts) {
-        const RayCounts& c = thread.counts;
+    for (const PerThread<RayCounts>& thread : counts) {
+        const RayCounts& c = thread.value;
         result.rays.eye += c.eye;
         result.rays.shadow += c.shadow;
         result.rays.reflected += c.reflected;

@@ -85,12 +85,16 @@ struct Nearest {
     // over any primitive of the BVH (a box standing on the floor plane shows the floor).
     [[gnu::always_inline]] void test(const Ray& ray, const Primitive& primitive, std::uint32_t i, double t_min) {
         TriangleDistance candidate;
-        if (const double hit_t = distance(ray, primitive, Interval{t_min, limit_for(i)}, candidate); hit_t != kMiss) {
-            t = hit_t;
-            index = i;
-            found = true;
-            on_triangle = candidate;
-        }
+        if (const double hit_t = distance(ray, primitive, Interval{t_min, limit_for(i)}, candidate); hit_t != kMiss)
+            take(i, hit_t, candidate);
+    }
+
+    // Primitive i is the nearest so far, met at hit_t (`where` on it, for a triangle).
+    void take(std::uint32_t i, double hit_t, const TriangleDistance& where) {
+        t = hit_t;
+        index = i;
+        found = true;
+        on_triangle = where;
     }
 
     // The limit test() searches primitive i up to.
@@ -111,13 +115,9 @@ struct Nearest {
             }
             // The widest range either search may have: to t and a hair beyond.
             const screens::TrianglePair pair = screens::triangle_pair_distances(ray, *two.a, *two.b, Interval{t_min, std::nextafter(t, kMiss)});
-            for (unsigned lane = 0; lane < 2; ++lane) {
-                if (!(pair.hit >> lane & 1u) || !(pair.t[lane] < limit_for(i + lane))) continue;
-                t = pair.t[lane];
-                index = i + lane;
-                found = true;
-                on_triangle = TriangleDistance{pair.t[lane], pair.b1[lane], pair.b2[lane]};
-            }
+            for (unsigned lane = 0; lane < 2; ++lane)
+                if ((pair.hit >> lane & 1u) && pair.t[lane] < limit_for(i + lane))
+                    take(i + lane, pair.t[lane], TriangleDistance{pair.t[lane], pair.b1[lane], pair.b2[lane]});
         }
 #endif
         for (; i < end; ++i) test(ray, scene.primitives[i], i, t_min);

@@ -50,6 +50,7 @@ class RayPacket {
     void refresh_t_max();
     /// The packet's far end: no active ray searches beyond it.
     float t_max() const { return t_max_hi_; }
+
     /// The packet's test of side-by-side boxes (bounds[6][kBoxes] as in
     /// WideBvh::Node): a bit per box some ray may meet, and a distance no ray
     /// enters it before.
