@@ -3,13 +3,15 @@
 // Why: the scene answers rays that travel together faster as packets (the
 // reference renderer's leaf kernels), but the shading, the labs' code, asks for
 // one ray at a time, in the order of the recursion. So trace_pixels() first
-// looks ahead: it finds the hits of the block's eye rays as one packet, asks
-// lab 2's own is_lit which shadow feeler each hit sends towards each light
-// (with occluded() noting the feeler instead of tracing it), and finds those,
-// light by light, as packets too. Then it traces each pixel exactly as
-// trace_pixel() does, and a query is answered from what was found only when it
-// is the very same query, bit for bit: a guess that turns out wrong costs
-// time, never a different image.
+// looks ahead: it finds the hits of the block's eye rays as one packet, runs
+// the labs' local shading (lab 2 or 3) at each hit with occluded() noting each
+// shadow feeler instead of tracing it (and answering "not blocked"), and finds
+// those feelers, light by light, as packets too. Then it traces each pixel
+// exactly as trace_pixel() does, and a query is answered from what was found
+// only when it is the very same query, bit for bit: the same eye ray, the same
+// feeler, or the same hit's local colour when none of its feelers turned out
+// blocked (the shading then gets the very answers it got ahead). A guess that
+// turns out wrong costs time, never a different image.
 //
 // Only the eye rays and their feelers: the secondary rays of neighbouring
 // pixels part ways, and looking ahead for them (measured with reflections,
@@ -37,6 +39,18 @@ std::optional<bool> Tracer::Engine::blocked_ahead(const Ray& ray, double distanc
     return std::nullopt;
 }
 
+std::optional<Color> Tracer::Engine::local_ahead(const Ray& ray, int depth) {
+    if (depth != 1 || !ahead || !ahead->local_if_lit || !same_bits(ahead->eye, ray)) return std::nullopt;
+    for (const Feeler& feeler : ahead->feelers)
+        if (feeler.blocked) return std::nullopt; // the colour differs: shade again, with the answers
+    // Sent again, the feelers would count against the pixel's budget: only when all fit.
+    const std::size_t sent = ahead->feelers.size();
+    if (pixel_rays + sent > settings.max_rays_per_pixel) return std::nullopt;
+    pixel_rays += static_cast<std::uint32_t>(sent);
+    stats.shadow += sent;
+    return ahead->local_if_lit;
+}
+
 namespace {
 
 // Points `slot` at `value` while it lives, and at nothing after (even when the
@@ -53,19 +67,32 @@ class PointingWhileAlive {
     T*& slot_;
 };
 
-// Notes the feelers the shading of `hit` will send (the labs send none towards
-// a light behind the surface), with the light each goes to; returns how many lights there are.
-std::size_t note_feelers(const Tracer& tracer, Tracer::Engine& e, const Hit& hit,
-                         std::vector<Tracer::Engine::Feeler>& feelers) {
+// Computes the local colour of `hit` (seen along wo) as shade() will, with
+// every shadow feeler taken as unblocked, and notes the feelers it sends, each
+// with the light it goes to; returns the colour and how many lights there are.
+std::pair<Color, std::size_t> shade_as_if_lit(const Tracer& tracer, Tracer::Engine& e, const Hit& hit, const Vec3& wo,
+                                              std::vector<Tracer::Engine::Feeler>& feelers) {
     const std::span<const PointLight> lights = tracer.lights();
-    const PointingWhileAlive collecting(e.collecting_feelers, &feelers);
-    for (std::size_t l = 0; l < lights.size(); ++l) {
-        if (glm::dot(hit.normal, lights[l].position - hit.point) <= 0.0) continue;
-        const std::size_t before = feelers.size();
-        is_lit(tracer, hit, lights[l]);
-        for (std::size_t f = before; f < feelers.size(); ++f) feelers[f].light = l;
+    Color local;
+    {
+        const PointingWhileAlive collecting(e.collecting_feelers, &feelers);
+        local = e.local_colour(tracer, hit, wo);
     }
-    return lights.size();
+    // The labs send at most one feeler a light, in the order of the lights, each
+    // as far as its light: that names the light, which groups feelers into
+    // packets. A feeler that matches no light joins the next light's group (or
+    // the last one's): a less coherent packet, the same answers.
+    std::size_t next = 0; // the lights before it have had their feeler
+    std::size_t groups = 0;
+    for (Tracer::Engine::Feeler& feeler : feelers) {
+        std::size_t l = next;
+        while (l < lights.size() && !same_bits(glm::length(lights[l].position - hit.point), feeler.distance)) ++l;
+        if (l >= lights.size()) l = lights.empty() ? 0 : std::min(next, lights.size() - 1);
+        feeler.light = l;
+        next = l + 1;
+        groups = std::max(groups, l + 1); // find_blockers() must trace every group
+    }
+    return {local, std::max(lights.size(), groups)};
 }
 
 // Finds whether the noted feelers are blocked, those towards one light together.
@@ -118,9 +145,12 @@ void Tracer::trace_pixels(std::span<const Vec2> positions, std::span<Color> colo
         ahead.eye = s.rays[i];
         ahead.hit = s.hits[i];
         ahead.feelers.clear();
+        ahead.local_if_lit.reset();
         if (!ahead.hit || e.settings.stage < stage_number(Stage::shadows)) continue;
         begin_pixel(sample_at(positions[i].x, positions[i].y)); // the lights of this pixel's sample
-        light_count = std::max(light_count, note_feelers(*this, e, *ahead.hit, ahead.feelers));
+        const auto [local, lights] = shade_as_if_lit(*this, e, *ahead.hit, -ahead.eye.direction, ahead.feelers);
+        ahead.local_if_lit = local;
+        light_count = std::max(light_count, lights);
     }
     find_blockers(e, light_count);
     // Each pixel as trace_pixel() traces it, its queries answered from above.

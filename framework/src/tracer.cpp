@@ -130,7 +130,9 @@ Color Tracer::Engine::shade(const Tracer& tracer, const Ray& ray, int depth) {
 
     // Local colour: flat (ray casting), Lambert with shadows, then Blinn-Phong.
     if (!reached(Stage::shadows)) return noted(&RayNode::local, material.color_at(hit->point));
-    Color color = noted(&RayNode::local, reached(Stage::blinn_phong) ? blinn_phong(tracer, *hit, wo) : lambert(tracer, *hit));
+    std::optional<Color> local = local_ahead(ray, depth);
+    if (!local) local = local_colour(tracer, *hit, wo);
+    Color color = noted(&RayNode::local, *local);
     if (!reached(Stage::reflection) || depth >= settings.max_depth) return color;
 
     // Secondary rays, one level deeper.
@@ -139,6 +141,10 @@ Color Tracer::Engine::shade(const Tracer& tracer, const Ray& ray, int depth) {
     if (material.specular > 0.0) color += noted(&RayNode::reflection, reflection(tracer, *hit, wo, depth));
     if (reached(Stage::refraction) && transparent) color += noted(&RayNode::refraction, refraction(tracer, *hit, wo, depth));
     return color;
+}
+
+Color Tracer::Engine::local_colour(const Tracer& tracer, const Hit& hit, const Vec3& wo) const {
+    return settings.stage >= stage_number(Stage::blinn_phong) ? blinn_phong(tracer, hit, wo) : lambert(tracer, hit);
 }
 
 void Tracer::begin_pixel(const PixelSample& sample) const {

@@ -42,6 +42,9 @@ struct Tracer::Engine {
         Ray eye;
         std::optional<Hit> hit;
         std::vector<Feeler> feelers;
+        // The local colour of `hit`, as shade() computes it when none of the
+        // feelers is blocked (the look-ahead ran it with every feeler unblocked).
+        std::optional<Color> local_if_lit;
     };
     // trace_pixels()'s working lists; scratch, so a copy of the tracer starts without them.
     struct Scratch {
@@ -82,8 +85,13 @@ struct Tracer::Engine {
     std::optional<Hit> closest_hit(const Ray& ray, int depth) const;
     /// Whether the feeler is blocked, if it was answered ahead.
     std::optional<bool> blocked_ahead(const Ray& ray, double distance) const;
+    /// The local colour of the hit of `ray` at `depth`, if the look-ahead found
+    /// it: counted as the shadow feelers it sends, as if it ran again.
+    std::optional<Color> local_ahead(const Ray& ray, int depth);
 
     Color shade(const Tracer& tracer, const Ray& ray, int depth);
+    /// The labs' local colour of `hit` seen along wo: Lambert with shadows (lab 2) or Blinn-Phong (lab 3).
+    Color local_colour(const Tracer& tracer, const Hit& hit, const Vec3& wo) const;
     // Ray tree recording: only with a tree, and kept out of the way of renders without one.
     [[gnu::noinline]] Color trace_recorded(const Tracer& tracer, const Ray& ray, int depth, RayKind kind, const Color& weight);
     [[gnu::noinline]] bool occluded_recorded(const Ray& ray, double distance);

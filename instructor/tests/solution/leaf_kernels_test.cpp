@@ -414,6 +414,47 @@ TEST(FastPath, BlocksOfPixelsRenderWhatPixelsAloneRender) {
     }
 }
 
+TEST(FastPath, BlocksOfPixelsOnARayBudgetRenderWhatPixelsAloneRender) {
+    // The look-ahead computes each eye hit's local colour once, with its feelers
+    // taken as unblocked, and the pixel's trace uses it only when none is blocked
+    // and every feeler still fits in the pixel's ray budget (a feeler over budget
+    // counts as blocked). Budgets of 1 to 4 rays cut pixels short before, among
+    // and after the feelers of scenes with 2 and 3 lights, for Lambert (lab 2),
+    // Blinn-Phong (lab 3) and every stage after. Small spheres give each scene a
+    // BVH of many nodes, without which there are no packets and no look-ahead.
+    for (const char* name : {"02_shadows.p3f", "03_blinn_phong.p3f", "10_bvh.p3f", "course_features.p3f"}) {
+        LoadedScene loaded = load_scene(std::string(WHITTED_SOURCE_DIR "/scenes/") + name);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> unit(-1.0, 1.0);
+        for (int i = 0; i < 200; ++i)
+            loaded.data.primitives.push_back({Sphere{Point3(3.0 * unit(rng), 3.0 * unit(rng), 3.0 * unit(rng)), 0.1}});
+        loaded.data.camera = loaded.data.camera.with_resolution(37, 29);
+        const Scene scene(loaded.data, linked_leaf_kernels());
+        ASSERT_TRUE(scene.queries_packets()) << name;
+        for (const Stage stage : {Stage::shadows, Stage::blinn_phong, Stage::bvh}) {
+            for (std::uint32_t budget = 1; budget <= 4; ++budget) {
+                RenderSettings settings;
+                settings.samples_per_pixel = 0;
+                settings.stage = stage_number(stage);
+                settings.max_rays_per_pixel = budget;
+                const RenderResult blocks = render(scene, settings, 2);
+                const RenderResult alone = render_pixels(scene.camera(), 2, {}, [&](RayStats& stats) -> PixelFunction {
+                    return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
+                });
+                const std::string where = std::string(name) + " stage " + std::to_string(stage_number(stage)) + " budget " + std::to_string(budget);
+                EXPECT_EQ(0, std::memcmp(blocks.image.pixels.data(), alone.image.pixels.data(),
+                                         blocks.image.pixels.size() * sizeof(Color)))
+                    << where;
+                EXPECT_EQ(blocks.stats.shadow, alone.stats.shadow) << where;
+                EXPECT_EQ(blocks.stats.pixels_cut_short, alone.stats.pixels_cut_short) << where;
+                if (budget == 1) {
+                    EXPECT_GT(alone.stats.pixels_cut_short, 0u) << where; // the budget bites
+                }
+            }
+        }
+    }
+}
+
 TEST(FastPath, BlocksOfPixelsWithAreaLightsRenderWhatPixelsAloneRender) {
     // Soft shadows: each pixel sample sees its own points on the area light, so
     // the feelers the look-ahead notes must be the ones of the pixel's sample.
