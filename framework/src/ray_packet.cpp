@@ -104,8 +104,7 @@ bool RayPacket::lanes_at_once(std::span<const Ray> rays, double extent) {
     const int count = static_cast<int>(rays.size());
     const __m128d sign_bit = _mm_set1_pd(-0.0);
     const auto largest_bits = [&](const Ray& ray) {
-        const Vec3 magnitude = glm::abs(ray.direction);
-        return std::bit_cast<std::uint64_t>(std::max({magnitude.x, magnitude.y, magnitude.z})) >> 52;
+        return std::bit_cast<std::uint64_t>(std::max({std::abs(ray.direction.x), std::abs(ray.direction.y), std::abs(ray.direction.z)})) >> 52;
     };
     const std::uint64_t biased = largest_bits(rays[0]);
     if (biased < 2 || biased > 2042) return false; // zero, subnormal, infinite, or clamped by WideRay::numbers()

@@ -13,7 +13,9 @@
 
 #include "screens.hpp"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace whitted {
@@ -22,6 +24,14 @@ namespace {
 // What distance() returns for "no hit in the range" (no valid t equals it:
 // ranges are open, so even an infinite maximum excludes it).
 constexpr double kMiss = std::numeric_limits<double>::infinity();
+
+// std::nextafter(t, kMiss), the next double up, without the library call.
+inline double next_up(double t) {
+    if (!(t < kMiss)) return t; // +infinity and NaN stay
+    if (t == 0.0) return std::numeric_limits<double>::denorm_min();
+    const auto bits = std::bit_cast<std::uint64_t>(t);
+    return std::bit_cast<double>(t > 0.0 ? bits + 1 : bits - 1);
+}
 
 // The distance of the ray's hit with the primitive inside t_range, or kMiss;
 // for a triangle, also where on it (`on_triangle`), to build its hit from later.
@@ -98,7 +108,7 @@ struct Nearest {
     }
 
     // The limit test() searches primitive i up to.
-    double limit_for(std::uint32_t i) const { return index != kNoPrimitive && i < index ? std::nextafter(t, kMiss) : t; }
+    double limit_for(std::uint32_t i) const { return index != kNoPrimitive && i < index ? next_up(t) : t; }
 
     // Tests the primitives of a leaf, [first, first + count): neighbouring
     // triangles two at a time (screens.hpp), the same answers as test().
@@ -114,7 +124,7 @@ struct Nearest {
                 continue;
             }
             // The widest range either search may have: to t and a hair beyond.
-            const screens::TrianglePair pair = screens::triangle_pair_distances(ray, *two.a, *two.b, Interval{t_min, std::nextafter(t, kMiss)});
+            const screens::TrianglePair pair = screens::triangle_pair_distances(ray, *two.a, *two.b, Interval{t_min, next_up(t)});
             for (unsigned lane = 0; lane < 2; ++lane)
                 if ((pair.hit >> lane & 1u) && pair.t[lane] < limit_for(i + lane))
                     take(i + lane, pair.t[lane], TriangleDistance{pair.t[lane], pair.b1[lane], pair.b2[lane]});

@@ -48,13 +48,13 @@ class WideRay {
         // Scale the direction by a power of two (exactly) so that its largest
         // component lies in [0.5, 1): float then holds every direction, however
         // long or short; distances along the scaled ray are t / scale.
-        const Vec3 magnitude = glm::abs(ray.direction);
-        const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
+        // std::abs, not glm::abs: glm's is a branch on the sign, which rays of all
+        // directions mispredict (the -0 it keeps changes no number below).
+        const double largest = std::max({std::abs(ray.direction.x), std::abs(ray.direction.y), std::abs(ray.direction.z)});
         const int exponent = std::clamp(binary_exponent(largest), -1020, 1020); // both scales stay finite
         n.inverse_scale = power_of_two(exponent);
         const double scale = power_of_two(-exponent);
-        const Vec3 origin_magnitude = glm::abs(ray.origin);
-        const double origin_size = std::max({origin_magnitude.x, origin_magnitude.y, origin_magnitude.z});
+        const double origin_size = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z)});
         // The origin's share of the rounding, plus a sliver of the scene's size so
         // that a direction component of 0 (replaced by 2^-62) keeps a slab the ray
         // runs inside open for far longer than any distance in the scene.
