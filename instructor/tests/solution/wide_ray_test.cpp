@@ -197,3 +197,45 @@ TEST(WideRay, PacketLanesHoldWhatEachRayAloneComputes) {
     }
     EXPECT_EQ(packets, 20000);
 }
+
+TEST(WideRay, RangeEndsRoundOutwardsToTheNearestFloats) {
+    // numbers() rounds t_min down and t_max up to floats (a unit-size direction
+    // keeps t in its own units): the float range must hold the double one, and
+    // be the tightest that does. Checked against std::nextafter on doubles of
+    // every size, both signs, zeros, floats exactly, halfway cases and beyond FLT_MAX.
+    const double max = std::numeric_limits<float>::max();
+    const float inf = std::numeric_limits<float>::infinity();
+    const auto below = [](float f) { return std::nextafter(f, -std::numeric_limits<float>::infinity()); };
+    const auto above = [](float f) { return std::nextafter(f, std::numeric_limits<float>::infinity()); };
+    const auto down = [&](double t) -> float {
+        if (t < -max) return -inf;
+        if (t > max) return std::numeric_limits<float>::max();
+        const float f = static_cast<float>(t);
+        return static_cast<double>(f) > t ? below(f) : f;
+    };
+    const auto up = [&](double t) -> float {
+        if (t > max) return inf;
+        if (t < -max) return -std::numeric_limits<float>::max();
+        const float f = static_cast<float>(t);
+        return static_cast<double>(f) < t ? above(f) : f;
+    };
+    std::vector<double> values{0.0, -0.0, 1.0, -1.0, 0x1p-149, -0x1p-149, 0x1p-150, -0x1p-150, 0x1p-160, -0x1p-160,
+                               0x1p-126, -0x1p-126, max, -max, 0x1.fffffefffffffp127, 0x1p128, -0x1p128, 1e300, -1e300,
+                               kInfinity, -kInfinity, 1.0 + 0x1p-24, 1.0 - 0x1p-25, -1.0 - 0x1p-24};
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(1.0, 2.0);
+    std::uniform_int_distribution<int> exponent(-160, 130);
+    for (int i = 0; i < 200000; ++i) {
+        const double t = std::ldexp(unit(rng), exponent(rng));
+        values.push_back(i % 2 ? t : -t);
+        values.push_back(static_cast<double>(static_cast<float>(t))); // a float exactly
+    }
+    const Ray ray{Point3(0.0), Vec3(0.75, 0.5, -0.25)};
+    for (const double t : values) {
+        const WideRay::Numbers n = WideRay::numbers(ray, 1.0, t, t);
+        ASSERT_EQ(n.inverse_scale, 1.0);
+        const float low = down(t), high = up(t);
+        ASSERT_EQ(std::memcmp(&n.t_min, &low, sizeof low), 0) << std::hexfloat << t << " down: " << n.t_min << " not " << low;
+        ASSERT_EQ(std::memcmp(&n.t_max, &high, sizeof high), 0) << std::hexfloat << t << " up: " << n.t_max << " not " << high;
+    }
+}

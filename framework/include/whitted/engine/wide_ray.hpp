@@ -153,26 +153,29 @@ class WideRay {
         if (k < -1022 || k > 1023) return std::ldexp(1.0, k);
         return std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
     }
-    // The neighbouring float of a finite f towards +infinity (step +1) or -infinity (step -1),
-    // by stepping its bit pattern (std::nextafter is a library call, too slow here).
-    static float next_float(float f, int step) {
-        if (f == 0.0f) return step > 0 ? std::numeric_limits<float>::denorm_min() : -std::numeric_limits<float>::denorm_min();
-        const auto bits = std::bit_cast<std::uint32_t>(f);
-        const bool away_from_zero = (f > 0.0f) == (step > 0);
-        return std::bit_cast<float>(away_from_zero ? bits + 1 : bits - 1);
-    }
+    // The float nearest t on the side of -infinity (round_down) or +infinity
+    // (round_up). Whether the conversion rounded the wrong way is a coin toss
+    // from ray to ray, so the step to the neighbouring float is taken by
+    // arithmetic on its bits, without a branch (std::nextafter is a library call).
     static float round_down(double t) {
         if (t < -std::numeric_limits<float>::max()) return -std::numeric_limits<float>::infinity();
         if (t > std::numeric_limits<float>::max()) return std::numeric_limits<float>::max();
         const float f = static_cast<float>(t);
-        return static_cast<double>(f) > t ? next_float(f, -1) : f;
+        const std::int32_t rounded_up = static_cast<double>(f) > t; // 1: step to the float below
+        // The float below 0 (either sign) is the one after -0; a negative float's bits grow downwards.
+        const std::int32_t bits = std::bit_cast<std::int32_t>(f) | (kSignBit & -((f == 0.0f) & rounded_up));
+        return std::bit_cast<float>(bits + (-((bits >> 31) | 1) & -rounded_up));
     }
     static float round_up(double t) {
         if (t > std::numeric_limits<float>::max()) return std::numeric_limits<float>::infinity();
         if (t < -std::numeric_limits<float>::max()) return -std::numeric_limits<float>::max();
         const float f = static_cast<float>(t);
-        return static_cast<double>(f) < t ? next_float(f, +1) : f;
+        const std::int32_t rounded_down = static_cast<double>(f) < t; // 1: step to the float above
+        // The float above 0 (either sign) is the one after +0.
+        const std::int32_t bits = std::bit_cast<std::int32_t>(f) & ~(kSignBit & -((f == 0.0f) & rounded_down));
+        return std::bit_cast<float>(bits + (((bits >> 31) | 1) & -rounded_down));
     }
+    static constexpr std::int32_t kSignBit = std::numeric_limits<std::int32_t>::min();
 
     // Per axis, repeated in four lanes for the four-box test.
     alignas(16) float inv_[3][4];
