@@ -32,7 +32,7 @@ inline bool is_finite(const Vec3& v) {
 /// The largest absolute component of v; NaN when any component is NaN (a plain max would drop it).
 inline double max_abs_component(const Vec3& v) {
     if (std::isnan(v.x) || std::isnan(v.y) || std::isnan(v.z)) return std::numeric_limits<double>::quiet_NaN();
-    return glm::max(std::abs(v.x), glm::max(std::abs(v.y), std::abs(v.z))); // std::abs: no branch on the sign
+    return glm::max(glm::abs(v.x), glm::max(glm::abs(v.y), glm::abs(v.z)));
 }
 
 } // namespace whitted
