@@ -455,6 +455,89 @@ TEST(FastPath, BlocksOfPixelsOnARayBudgetRenderWhatPixelsAloneRender) {
     }
 }
 
+namespace {
+
+// A random scene for the look-ahead: 250 spheres, triangles and boxes (a BVH of
+// many nodes, so packets are used) of opaque, mirror and glass materials above a
+// floor plane, with `lights` point lights of which some lie exactly on the floor,
+// some under it and some where the light before is, and `area` area lights.
+SceneData many_lights_scene(unsigned seed, int lights, int area) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    SceneData data;
+    data.ambient = Color(0.1);
+    for (int m = 0; m < 4; ++m) {
+        Material material;
+        material.color = Color(fraction(rng), fraction(rng), fraction(rng));
+        material.specular = m == 0 ? 0.0 : 0.5 * fraction(rng);
+        material.shininess = 1.0 + 50.0 * fraction(rng);
+        material.transmittance = m == 3 ? 0.6 : 0.0;
+        material.ior = 1.5;
+        data.materials.push_back(material);
+    }
+    for (int i = 0; i < 250; ++i) {
+        const Point3 c(3.0 * unit(rng), 3.0 * unit(rng), 3.0 * unit(rng));
+        Primitive primitive{Sphere{c, 0.05 + 0.3 * fraction(rng)}};
+        if (i % 3 == 1) primitive = Primitive{Triangle{c, c + Vec3(0.5, 0.0, 0.1), c + Vec3(0.0, 0.5, 0.2)}};
+        if (i % 7 == 2) primitive = Primitive{Box{c, c + Vec3(0.3, 0.2, 0.4)}};
+        primitive.material = static_cast<std::uint32_t>(i % 4);
+        data.primitives.push_back(primitive);
+    }
+    data.primitives.push_back({Plane{Point3(0.0, -3.5, 0.0), Vec3(0.0, 1.0, 0.0)}});
+    for (int l = 0; l < lights; ++l) {
+        Point3 position(5.0 * unit(rng), 5.0 * unit(rng), 5.0 * unit(rng));
+        if (l % 4 == 3) position.y = -3.5;                             // on the floor
+        if (l % 5 == 4) position.y = -6.0;                             // under it
+        if (l % 6 == 5) position = data.lights[l - 1].position;        // where the one before is
+        data.lights.push_back(PointLight{position, Color(0.3 + fraction(rng), 0.3 + fraction(rng), 0.3 + fraction(rng))});
+    }
+    for (int a = 0; a < area; ++a)
+        data.area_lights.push_back(AreaLight{Point3(2.0 * unit(rng), 4.0, 2.0 * unit(rng)), Color(1.0), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 0.0, 1.0), 1 + 3 * a});
+    data.camera.eye = Point3(0.3, 1.2, 9.0);
+    data.camera.at = Point3(0.0);
+    data.camera = data.camera.with_resolution(37, 29);
+    return data;
+}
+
+} // namespace
+
+TEST(FastPath, BlocksOfPixelsRenderWhatPixelsAloneRenderWithManyLights) {
+    // The look-ahead's feelers, grouped by light, and its local colours, used
+    // only when no feeler is blocked and all fit in the budget: the same image
+    // and the same counts as pixels alone with 0 to 7 point lights (on, under
+    // and at the same place as others), area lights, each stage that shades,
+    // and budgets that cut pixels short anywhere (0 rays to none).
+    for (unsigned seed : {1u, 2u}) {
+        for (const int lights : {0, 1, 3, 7}) {
+            for (const int area : {0, 2}) {
+                const Scene scene(many_lights_scene(seed * 100 + 3 * lights + area, lights, area), linked_leaf_kernels());
+                ASSERT_TRUE(scene.queries_packets());
+                for (const Stage stage : {Stage::shadows, Stage::blinn_phong, Stage::fresnel, Stage::soft_shadows, Stage::bvh}) {
+                    for (const std::uint32_t budget : {0u, 1u, 2u, 5u, 10000u}) {
+                        RenderSettings settings;
+                        settings.samples_per_pixel = 0;
+                        settings.stage = stage_number(stage);
+                        settings.max_rays_per_pixel = budget;
+                        const RenderResult blocks = render(scene, settings, 2);
+                        const RenderResult alone = render_pixels(scene.camera(), 1, {}, [&](RayStats& stats) -> PixelFunction {
+                            return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
+                        });
+                        const std::string where = "seed " + std::to_string(seed) + ", " + std::to_string(lights) + " lights, " +
+                                                  std::to_string(area) + " area lights, stage " + std::to_string(stage_number(stage)) +
+                                                  ", budget " + std::to_string(budget);
+                        ASSERT_EQ(0, std::memcmp(blocks.image.pixels.data(), alone.image.pixels.data(),
+                                                 blocks.image.pixels.size() * sizeof(Color)))
+                            << where;
+                        ASSERT_EQ(blocks.stats.shadow, alone.stats.shadow) << where;
+                        ASSERT_EQ(blocks.stats.total(), alone.stats.total()) << where;
+                        ASSERT_EQ(blocks.stats.pixels_cut_short, alone.stats.pixels_cut_short) << where;
+                    }
+                }
+            }
+        }
+    }
+}
+
 TEST(FastPath, BlocksOfPixelsWithAreaLightsRenderWhatPixelsAloneRender) {
     // Soft shadows: each pixel sample sees its own points on the area light, so
     // the feelers the look-ahead notes must be the ones of the pixel's sample.
