@@ -414,48 +414,37 @@ TEST(FastPath, BlocksOfPixelsRenderWhatPixelsAloneRender) {
     }
 }
 
-TEST(FastPath, BlocksOfPixelsOnARayBudgetRenderWhatPixelsAloneRender) {
-    // The look-ahead computes each eye hit's local colour once, with its feelers
-    // taken as unblocked, and the pixel's trace uses it only when none is blocked
-    // and every feeler still fits in the pixel's ray budget (a feeler over budget
-    // counts as blocked). Budgets of 1 to 4 rays cut pixels short before, among
-    // and after the feelers of scenes with 2 and 3 lights, for Lambert (lab 2),
-    // Blinn-Phong (lab 3) and every stage after. Small spheres give each scene a
-    // BVH of many nodes, without which there are no packets and no look-ahead.
-    for (const char* name : {"02_shadows.p3f", "03_blinn_phong.p3f", "10_bvh.p3f", "course_features.p3f"}) {
-        LoadedScene loaded = load_scene(std::string(WHITTED_SOURCE_DIR "/scenes/") + name);
-        std::mt19937 rng(7);
-        std::uniform_real_distribution<double> unit(-1.0, 1.0);
-        for (int i = 0; i < 200; ++i)
-            loaded.data.primitives.push_back({Sphere{Point3(3.0 * unit(rng), 3.0 * unit(rng), 3.0 * unit(rng)), 0.1}});
-        loaded.data.camera = loaded.data.camera.with_resolution(37, 29);
-        const Scene scene(loaded.data, linked_leaf_kernels());
-        ASSERT_TRUE(scene.queries_packets()) << name;
-        for (const Stage stage : {Stage::shadows, Stage::blinn_phong, Stage::bvh}) {
-            for (std::uint32_t budget = 1; budget <= 4; ++budget) {
-                RenderSettings settings;
-                settings.samples_per_pixel = 0;
-                settings.stage = stage_number(stage);
-                settings.max_rays_per_pixel = budget;
-                const RenderResult blocks = render(scene, settings, 2);
-                const RenderResult alone = render_pixels(scene.camera(), 2, {}, [&](RayStats& stats) -> PixelFunction {
-                    return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
-                });
-                const std::string where = std::string(name) + " stage " + std::to_string(stage_number(stage)) + " budget " + std::to_string(budget);
-                EXPECT_EQ(0, std::memcmp(blocks.image.pixels.data(), alone.image.pixels.data(),
-                                         blocks.image.pixels.size() * sizeof(Color)))
-                    << where;
-                EXPECT_EQ(blocks.stats.shadow, alone.stats.shadow) << where;
-                EXPECT_EQ(blocks.stats.pixels_cut_short, alone.stats.pixels_cut_short) << where;
-                if (budget == 1) {
-                    EXPECT_GT(alone.stats.pixels_cut_short, 0u) << where; // the budget bites
-                }
-            }
-        }
-    }
+namespace {
+
+// Adds `count` small spheres scattered around the origin: a BVH of many nodes,
+// which packets walk (a scene of a few shapes is one leaf and never uses them).
+void add_small_spheres(SceneData& data, unsigned seed, int count) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < count; ++i) data.primitives.push_back({Sphere{Point3(3.0 * unit(rng), 3.0 * unit(rng), 3.0 * unit(rng)), 0.1}});
 }
 
-namespace {
+// Whitted's settings (one ray through each pixel centre, the path that traces
+// blocks) for `stage`, with a budget of `budget` rays a pixel.
+RenderSettings block_settings(Stage stage, std::uint32_t budget) {
+    RenderSettings settings;
+    settings.samples_per_pixel = 0;
+    settings.stage = stage_number(stage);
+    settings.max_rays_per_pixel = budget;
+    return settings;
+}
+
+// What render() draws when each pixel is traced alone (trace_pixel), as the labs describe.
+RenderResult pixels_alone(const Scene& scene, const RenderSettings& settings, int threads) {
+    return render_pixels(scene.camera(), threads, {}, [&](RayStats& stats) -> PixelFunction {
+        return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
+    });
+}
+
+// True when both images hold the very same bits.
+bool same_pixels(const Image& a, const Image& b) {
+    return a.pixels.size() == b.pixels.size() && std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
+}
 
 // A random scene for the look-ahead: 250 spheres, triangles and boxes (a BVH of
 // many nodes, so packets are used) of opaque, mirror and glass materials above a
@@ -501,6 +490,37 @@ SceneData many_lights_scene(unsigned seed, int lights, int area) {
 
 } // namespace
 
+TEST(FastPath, BlocksOfPixelsOnARayBudgetRenderWhatPixelsAloneRender) {
+    // The look-ahead computes each eye hit's local colour once, with its feelers
+    // taken as unblocked, and the pixel's trace uses it only when none is blocked
+    // and every feeler still fits in the pixel's ray budget (a feeler over budget
+    // counts as blocked). Budgets of 1 to 4 rays cut pixels short before, among
+    // and after the feelers of scenes with 2 and 3 lights, for Lambert (lab 2),
+    // Blinn-Phong (lab 3) and every stage after. Small spheres give each scene a
+    // BVH of many nodes, without which there are no packets and no look-ahead.
+    for (const char* name : {"02_shadows.p3f", "03_blinn_phong.p3f", "10_bvh.p3f", "course_features.p3f"}) {
+        LoadedScene loaded = load_scene(std::string(WHITTED_SOURCE_DIR "/scenes/") + name);
+        add_small_spheres(loaded.data, 7, 200);
+        loaded.data.camera = loaded.data.camera.with_resolution(37, 29);
+        const Scene scene(loaded.data, linked_leaf_kernels());
+        ASSERT_TRUE(scene.queries_packets()) << name;
+        for (const Stage stage : {Stage::shadows, Stage::blinn_phong, Stage::bvh}) {
+            for (std::uint32_t budget = 1; budget <= 4; ++budget) {
+                const RenderSettings settings = block_settings(stage, budget);
+                const RenderResult blocks = render(scene, settings, 2);
+                const RenderResult alone = pixels_alone(scene, settings, 2);
+                const std::string where = std::string(name) + " stage " + std::to_string(stage_number(stage)) + " budget " + std::to_string(budget);
+                EXPECT_TRUE(same_pixels(blocks.image, alone.image)) << where;
+                EXPECT_EQ(blocks.stats.shadow, alone.stats.shadow) << where;
+                EXPECT_EQ(blocks.stats.pixels_cut_short, alone.stats.pixels_cut_short) << where;
+                if (budget == 1) {
+                    EXPECT_GT(alone.stats.pixels_cut_short, 0u) << where; // the budget bites
+                }
+            }
+        }
+    }
+}
+
 TEST(FastPath, BlocksOfPixelsRenderWhatPixelsAloneRenderWithManyLights) {
     // The look-ahead's feelers, grouped by light, and its local colours, used
     // only when no feeler is blocked and all fit in the budget: the same image
@@ -514,20 +534,13 @@ TEST(FastPath, BlocksOfPixelsRenderWhatPixelsAloneRenderWithManyLights) {
                 ASSERT_TRUE(scene.queries_packets());
                 for (const Stage stage : {Stage::shadows, Stage::blinn_phong, Stage::fresnel, Stage::soft_shadows, Stage::bvh}) {
                     for (const std::uint32_t budget : {0u, 1u, 2u, 5u, 10000u}) {
-                        RenderSettings settings;
-                        settings.samples_per_pixel = 0;
-                        settings.stage = stage_number(stage);
-                        settings.max_rays_per_pixel = budget;
+                        const RenderSettings settings = block_settings(stage, budget);
                         const RenderResult blocks = render(scene, settings, 2);
-                        const RenderResult alone = render_pixels(scene.camera(), 1, {}, [&](RayStats& stats) -> PixelFunction {
-                            return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
-                        });
+                        const RenderResult alone = pixels_alone(scene, settings, 1);
                         const std::string where = "seed " + std::to_string(seed) + ", " + std::to_string(lights) + " lights, " +
                                                   std::to_string(area) + " area lights, stage " + std::to_string(stage_number(stage)) +
                                                   ", budget " + std::to_string(budget);
-                        ASSERT_EQ(0, std::memcmp(blocks.image.pixels.data(), alone.image.pixels.data(),
-                                                 blocks.image.pixels.size() * sizeof(Color)))
-                            << where;
+                        ASSERT_TRUE(same_pixels(blocks.image, alone.image)) << where;
                         ASSERT_EQ(blocks.stats.shadow, alone.stats.shadow) << where;
                         ASSERT_EQ(blocks.stats.total(), alone.stats.total()) << where;
                         ASSERT_EQ(blocks.stats.pixels_cut_short, alone.stats.pixels_cut_short) << where;
@@ -545,20 +558,15 @@ TEST(FastPath, BlocksOfPixelsWithAreaLightsRenderWhatPixelsAloneRender) {
     // packets walk (a scene of a few shapes is one leaf and never uses them).
     LoadedScene loaded = load_scene(WHITTED_SOURCE_DIR "/scenes/08_soft_shadows.p3f");
     ASSERT_FALSE(loaded.data.area_lights.empty());
-    std::mt19937 rng(23);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    for (int i = 0; i < 300; ++i)
-        loaded.data.primitives.push_back({Sphere{Point3(3.0 * unit(rng), 3.0 * unit(rng), 3.0 * unit(rng)), 0.1}});
+    add_small_spheres(loaded.data, 23, 300);
     loaded.data.camera = loaded.data.camera.with_resolution(41, 33);
     const Scene scene(loaded.data, linked_leaf_kernels());
     ASSERT_TRUE(scene.queries_packets());
     RenderSettings settings;
     settings.samples_per_pixel = 0;
     const RenderResult blocks = render(scene, settings, 2);
-    const RenderResult alone = render_pixels(scene.camera(), 2, {}, [&](RayStats& stats) -> PixelFunction {
-        return [tracer = Tracer(scene, settings, stats)](double x, double y) { return tracer.trace_pixel(x, y); };
-    });
-    EXPECT_EQ(0, std::memcmp(blocks.image.pixels.data(), alone.image.pixels.data(), blocks.image.pixels.size() * sizeof(Color)));
+    const RenderResult alone = pixels_alone(scene, settings, 2);
+    EXPECT_TRUE(same_pixels(blocks.image, alone.image));
     EXPECT_EQ(blocks.stats.shadow, alone.stats.shadow);
     EXPECT_GT(blocks.stats.shadow, 1000u);
 }
