@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -237,5 +238,23 @@ TEST(WideRay, RangeEndsRoundOutwardsToTheNearestFloats) {
         const float low = down(t), high = up(t);
         ASSERT_EQ(std::memcmp(&n.t_min, &low, sizeof low), 0) << std::hexfloat << t << " down: " << n.t_min << " not " << low;
         ASSERT_EQ(std::memcmp(&n.t_max, &high, sizeof high), 0) << std::hexfloat << t << " up: " << n.t_max << " not " << high;
+    }
+    // A packet rounds four range ends at a time, in SSE2: the same floats, in
+    // every lane position and packet size (the values in their order, then shuffled).
+    std::vector<double> shuffled = values;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    values.insert(values.end(), shuffled.begin(), shuffled.end());
+    for (std::size_t first = 0, size = 1; first < values.size(); first += size, size = size % RayPacket::kMaxRays + 1) {
+        const std::size_t n = std::min(size, values.size() - first);
+        const std::vector<Ray> rays(n, ray);
+        std::vector<Interval> ranges;
+        for (std::size_t i = 0; i < n; ++i) ranges.push_back(Interval{values[first + i], values[first + (i + 1) % n]});
+        const RayPacket packet(rays, ranges, 1.0);
+        for (std::size_t i = 0; i < n; ++i) {
+            const WideRay::Numbers lane = packet.lane(static_cast<int>(i));
+            const float low = down(ranges[i].min), high = up(ranges[i].max);
+            ASSERT_EQ(std::memcmp(&lane.t_min, &low, sizeof low), 0) << std::hexfloat << ranges[i].min << " down in lane " << i;
+            ASSERT_EQ(std::memcmp(&lane.t_max, &high, sizeof high), 0) << std::hexfloat << ranges[i].max << " up in lane " << i;
+        }
     }
 }

@@ -62,11 +62,11 @@ class RayPacket {
     unsigned rays_meeting(const float (&bounds)[6][kBoxes], int slot, unsigned rays) const;
 
   private:
-    // Each ray's WideRay numbers into its lanes (not t_min_, t_max_) and the
-    // packet's scale; one by one clears coherent_ when the scales differ, at
-    // once declines (false) rays it does not take.
+    // Each ray's WideRay numbers into its lanes and the packet's scale: one by
+    // one (not t_min_, t_max_) clears coherent_ when the scales differ; at once
+    // (also the ranges, its lanes' and the packet's) declines (false) rays it does not take.
     void lanes_one_by_one(std::span<const Ray> rays, double extent);
-    bool lanes_at_once(std::span<const Ray> rays, double extent);
+    bool lanes_at_once(std::span<const Ray> rays, std::span<const Interval> t_ranges, double extent);
 
     // Each ray's numbers (WideRay's, lane by lane), four rays to an SSE register.
     alignas(16) float inv_[3][kMaxRays];
