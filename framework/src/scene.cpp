@@ -198,6 +198,11 @@ std::optional<Hit> Scene::closest_hit_with_kernels(const Ray& ray, Interval t_ra
 }
 
 bool Scene::occluded(const Ray& ray, Interval t_range) const {
+    std::uint32_t blocker = kNoBlocker;
+    return occluded(ray, t_range, blocker);
+}
+
+bool Scene::occluded(const Ray& ray, Interval t_range, std::uint32_t& blocker) const {
     const std::span<const Primitive> all = data_.primitives;
     if (data_.acceleration == Acceleration::none) {
         for (const Primitive& primitive : all)
@@ -209,7 +214,7 @@ bool Scene::occluded(const Ray& ray, Interval t_range) const {
             if (intersect(ray, plane, t_range)) return true;
         return grid_->occluded(ray, bounded_primitives(), t_range);
     }
-    if (kernels_) return occluded_with_kernels(ray, t_range);
+    if (kernels_) return occluded_with_kernels(ray, t_range, blocker);
     if (remote_) [[unlikely]]
         return remote_->occluded(*this, ray, t_range);
     for (const Primitive& plane : all.subspan(bounded_count_)) {
@@ -296,18 +301,25 @@ void Scene::closest_hits(std::span<const Ray> rays, std::span<const Interval> t_
 }
 
 void Scene::occluded_rays(std::span<const Ray> rays, std::span<const Interval> t_ranges, std::span<bool> blocked) const {
+    std::uint32_t blocker = kNoBlocker;
+    occluded_rays(rays, t_ranges, blocked, blocker);
+}
+
+void Scene::occluded_rays(std::span<const Ray> rays, std::span<const Interval> t_ranges, std::span<bool> blocked,
+                          std::uint32_t& blocker) const {
     if (!queries_packets()) {
-        for (std::size_t i = 0; i < rays.size(); ++i) blocked[i] = occluded(rays[i], t_ranges[i]);
+        for (std::size_t i = 0; i < rays.size(); ++i) blocked[i] = occluded(rays[i], t_ranges[i], blocker);
         return;
     }
     const SceneView view = kernel_view();
     for_each_packet(rays.size(), [&](std::size_t first, std::size_t count) {
-        kernels_->occluded_packet(view, rays.subspan(first, count), t_ranges.subspan(first, count), blocked.subspan(first, count));
+        kernels_->occluded_packet(view, rays.subspan(first, count), t_ranges.subspan(first, count), blocked.subspan(first, count),
+                                  blocker);
     });
 }
 
-bool Scene::occluded_with_kernels(const Ray& ray, Interval t_range) const {
-    return kernels_->occluded(kernel_view(), ray, t_range);
+bool Scene::occluded_with_kernels(const Ray& ray, Interval t_range, std::uint32_t& blocker) const {
+    return kernels_->occluded(kernel_view(), ray, t_range, blocker);
 }
 
 } // namespace whitted

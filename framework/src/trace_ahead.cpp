@@ -114,7 +114,9 @@ void find_blockers(Tracer::Engine& e, std::size_t light_count) {
             s.blocked_room = std::max<std::size_t>(s.rays.size(), 64);
             s.blocked = std::make_unique<bool[]>(s.blocked_room);
         }
-        e.scene.occluded_rays(s.rays, s.ranges, std::span(s.blocked.get(), s.rays.size()));
+        // The light's slot of the former blockers: what blocked the last feeler towards it is tried first.
+        std::uint32_t& former = e.blockers[l % Tracer::Engine::kBlockerSlots];
+        e.scene.occluded_rays(s.rays, s.ranges, std::span(s.blocked.get(), s.rays.size()), former);
         for (std::size_t f = 0; f < s.feelers.size(); ++f) s.feelers[f]->blocked = s.blocked[f];
     }
 }

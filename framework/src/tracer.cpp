@@ -130,6 +130,7 @@ Color Tracer::Engine::shade(const Tracer& tracer, const Ray& ray, int depth) {
 
     // Local colour: flat (ray casting), Lambert with shadows, then Blinn-Phong.
     if (!reached(Stage::shadows)) return noted(&RayNode::local, material.color_at(hit->point));
+    feelers_sent = 0;
     std::optional<Color> local = local_ahead(ray, depth);
     if (!local) local = local_colour(tracer, *hit, wo);
     Color color = noted(&RayNode::local, *local);
@@ -186,7 +187,7 @@ bool Tracer::occluded(const Ray& ray, double distance) const {
     if (!e.within_budget()) return true; // over budget: no more light is gathered for this pixel
     e.stats.count(RayKind::shadow);
     if (const std::optional<bool> blocked = e.blocked_ahead(ray, distance)) return *blocked;
-    return e.scene.occluded(ray, feeler_range(distance));
+    return e.scene.occluded(ray, feeler_range(distance), e.blockers[e.feelers_sent++ % Engine::kBlockerSlots]);
 }
 
 // occluded() writing the feeler into the tree.

@@ -27,6 +27,14 @@ struct Tracer::Engine {
     int current_node = -1;          // the ray being shaded, in tree
     std::vector<PointLight> lights{}; // lights() with area lights, for the sample `lights_for`
     std::optional<PixelSample> lights_for{};
+    // What blocked the last feeler towards each light (kNoBlocker: nothing),
+    // which the next one tests first: neighbouring points in a shadow are mostly
+    // in the shadow of one primitive. The labs send a hit's feelers light by
+    // light, so the n-th feeler of a hit takes slot n; the look-ahead's packets
+    // take their light's. A wrong slot costs time, never an answer.
+    static constexpr std::size_t kBlockerSlots = 4;
+    std::uint32_t blockers[kBlockerSlots] = {kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker};
+    std::size_t feelers_sent = 0; // by the hit being shaded
 
     // Answers found ahead for a pixel by trace_pixels() (trace_ahead.cpp): the
     // hit of its eye ray and the shadow feelers sent from there. A query is

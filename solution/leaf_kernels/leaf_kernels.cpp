@@ -12,6 +12,7 @@
 #include "whitted/engine/hit_distances.hpp"
 
 #include "screens.hpp"
+#include "whitted/scene.hpp"
 
 #include <bit>
 #include <cmath>
@@ -166,41 +167,58 @@ std::optional<Hit> closest(const SceneView& scene, const Ray& ray, Interval t_ra
     return nearest_hit(scene, ray, nearest, t_range);
 }
 
-// True when one of the infinite planes lies along the ray within t_range.
-bool plane_blocks(const SceneView& scene, const Ray& ray, Interval t_range) {
+// The infinite plane that lies along the ray within t_range, or kNoBlocker.
+std::uint32_t plane_blocking(const SceneView& scene, const Ray& ray, Interval t_range) {
     for (std::size_t i = scene.bounded_count; i < scene.primitives.size(); ++i)
-        if (distance(ray, scene.primitives[i], t_range) != kMiss) return true;
-    return false;
+        if (distance(ray, scene.primitives[i], t_range) != kMiss) return static_cast<std::uint32_t>(i);
+    return kNoBlocker;
 }
 
-// True when a primitive of the leaf [first, first + count) lies along the ray
-// within t_range; neighbouring triangles are tested two at a time (screens.hpp).
-[[gnu::always_inline]] inline bool leaf_blocks(const Ray& ray, const SceneView& scene, std::uint32_t first, std::uint32_t count, Interval t_range) {
+// True when primitive i, a former blocker (or kNoBlocker), lies along the ray within t_range.
+bool blocks(const SceneView& scene, const Ray& ray, std::uint32_t i, Interval t_range) {
+    return i < scene.primitives.size() && distance(ray, scene.primitives[i], t_range) != kMiss;
+}
+
+// The primitive of the leaf [first, first + count) that lies along the ray within
+// t_range, or kNoBlocker; neighbouring triangles are tested two at a time (screens.hpp).
+[[gnu::always_inline]] inline std::uint32_t leaf_blocker(const Ray& ray, const SceneView& scene, std::uint32_t first, std::uint32_t count,
+                                                         Interval t_range) {
     const std::uint32_t end = first + count;
     std::uint32_t i = first;
 #if WHITTED_PAIR_LANES
     for (; i + 1 < end; i += 2) {
         if (const TwoTriangles two(scene, i); two) {
-            if (screens::triangle_pair_distances(ray, *two.a, *two.b, t_range).hit != 0) return true;
-        } else if (distance(ray, scene.primitives[i], t_range) != kMiss || distance(ray, scene.primitives[i + 1], t_range) != kMiss) {
-            return true;
+            if (const unsigned hit = screens::triangle_pair_distances(ray, *two.a, *two.b, t_range).hit; hit != 0)
+                return i + static_cast<std::uint32_t>(__builtin_ctz(hit));
+        } else {
+            if (distance(ray, scene.primitives[i], t_range) != kMiss) return i;
+            if (distance(ray, scene.primitives[i + 1], t_range) != kMiss) return i + 1;
         }
     }
 #endif
     for (; i < end; ++i)
-        if (distance(ray, scene.primitives[i], t_range) != kMiss) return true;
-    return false;
+        if (distance(ray, scene.primitives[i], t_range) != kMiss) return i;
+    return kNoBlocker;
 }
 
-// The scene's occlusion query: any hit will do, so the first one ends it.
-bool occluded(const SceneView& scene, const Ray& ray, Interval t_range) {
-    if (plane_blocks(scene, ray, t_range)) return true;
-    bool blocked = false;
+// The primitive of the BVH that lies along the ray within t_range (the first
+// one the walk finds), or kNoBlocker: any hit will do, so the first one ends it.
+std::uint32_t bvh_blocker(const SceneView& scene, const Ray& ray, Interval t_range) {
+    std::uint32_t found = kNoBlocker;
     scene.bvh.traverse<false>(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
-        blocked = leaf_blocks(ray, scene, first, count, Interval{t_range.min, t_max});
-        return blocked ? -1.0 : t_max;
+        found = leaf_blocker(ray, scene, first, count, Interval{t_range.min, t_max});
+        return found != kNoBlocker ? -1.0 : t_max;
     });
-    return blocked;
+    return found;
+}
+
+// The scene's occlusion query: the former blocker first (the next feeler towards
+// a light likely passes it too), then the planes, then the BVH.
+bool occluded(const SceneView& scene, const Ray& ray, Interval t_range, std::uint32_t& blocker) {
+    if (blocks(scene, ray, blocker, t_range)) return true;
+    blocker = plane_blocking(scene, ray, t_range);
+    if (blocker == kNoBlocker) blocker = bvh_blocker(scene, ray, t_range);
+    return blocker != kNoBlocker;
 }
 
 // closest() for a packet of rays: the same planes, the same leaves for each
@@ -234,28 +252,34 @@ void closest_packet(const SceneView& scene, std::span<const Ray> rays, std::span
     for (std::size_t r = 0; r < rays.size(); ++r) hits[r] = nearest_hit(scene, rays[r], nearest[r], t_ranges[r]);
 }
 
-// occluded() for a packet of rays: a ray leaves the walk at its first blocker.
+// occluded() for a packet of rays: the former blocker and the planes for each
+// ray first, then the walk, which a ray leaves at its first blocker.
 void occluded_packet(const SceneView& scene, std::span<const Ray> rays, std::span<const Interval> t_ranges,
-                     std::span<bool> blocked) {
+                     std::span<bool> blocked, std::uint32_t& blocker) {
+    const std::uint32_t former = blocker;
+    blocker = kNoBlocker; // unless a ray of the packet is blocked
+    const auto note = [&](std::size_t r, std::uint32_t found) {
+        blocked[r] = found != kNoBlocker;
+        if (blocked[r]) blocker = found;
+        return blocked[r];
+    };
+    unsigned done = 0;
+    for (std::size_t r = 0; r < rays.size(); ++r)
+        if (note(r, blocks(scene, rays[r], former, t_ranges[r]) ? former : plane_blocking(scene, rays[r], t_ranges[r])))
+            done |= 1u << r;
+    if (done == (1u << rays.size()) - 1u) return; // at most RayPacket::kMaxRays rays
     RayPacket packet(rays, t_ranges, scene.bvh.extent());
     if (!packet.coherent()) {
-        for (std::size_t r = 0; r < rays.size(); ++r) blocked[r] = occluded(scene, rays[r], t_ranges[r]);
+        for (std::size_t r = 0; r < rays.size(); ++r)
+            if (!(done >> r & 1u)) note(r, bvh_blocker(scene, rays[r], t_ranges[r]));
         return;
-    }
-    unsigned done = 0;
-    for (std::size_t r = 0; r < rays.size(); ++r) {
-        blocked[r] = plane_blocks(scene, rays[r], t_ranges[r]);
-        if (blocked[r]) done |= 1u << r;
     }
     if (done != 0) packet.retire(done);
     scene.bvh.traverse_packet<false>(packet, [&](std::uint32_t first, std::uint32_t count, unsigned which) {
         unsigned found = 0;
         for (; which != 0; which &= which - 1) {
             const int r = __builtin_ctz(which);
-            if (leaf_blocks(rays[r], scene, first, count, t_ranges[r])) {
-                blocked[r] = true;
-                found |= 1u << r;
-            }
+            if (note(static_cast<std::size_t>(r), leaf_blocker(rays[r], scene, first, count, t_ranges[r]))) found |= 1u << r;
         }
         if (found != 0) packet.retire(found);
     });

@@ -59,6 +59,9 @@ class WideBvh;
 class UniformGrid;
 struct LeafKernels;
 struct SceneView;
+
+/// No primitive: the last shadow feeler was not blocked (Scene::occluded).
+inline constexpr std::uint32_t kNoBlocker = 0xffffffffu;
 struct RemoteSceneQueries;
 
 class Scene {
@@ -114,6 +117,11 @@ class Scene {
 
     /// True when any surface lies along the ray with t inside t_range.
     bool occluded(const Ray& ray, Interval t_range) const;
+    /// occluded(), the same answer, sooner inside a shadow: the reference
+    /// renderer's kernels test first the primitive `blocker` names (the one that
+    /// blocked the feeler before; kNoBlocker: none) and then set it to this
+    /// ray's blocker, or kNoBlocker (the labs' queries leave it alone).
+    bool occluded(const Ray& ray, Interval t_range, std::uint32_t& blocker) const;
 
     /// closest_hit() for each of several rays (hits[i] for rays[i] within
     /// t_ranges[i]): the very same answers, found faster when the rays travel
@@ -123,6 +131,10 @@ class Scene {
 
     /// occluded() for each of several rays (blocked[i] for rays[i] within t_ranges[i]).
     void occluded_rays(std::span<const Ray> rays, std::span<const Interval> t_ranges, std::span<bool> blocked) const;
+    /// occluded_rays() with a former blocker tested first, as occluded(ray, t_range, blocker)
+    /// tests it; it is then set to one of the rays' blockers, or kNoBlocker.
+    void occluded_rays(std::span<const Ray> rays, std::span<const Interval> t_ranges, std::span<bool> blocked,
+                       std::uint32_t& blocker) const;
 
     /// True when closest_hits() and occluded_rays() walk the BVH with packets
     /// of rays (the reference renderer's leaf kernels); else they ask one ray at a time.
@@ -136,7 +148,7 @@ class Scene {
     SceneView kernel_view() const; // what the leaf kernels see of this scene
     std::optional<Hit> closest_hit_with_kernels(const Ray& ray, Interval t_range) const;
     bool walks_lab_bvh() const { return bvh_choice_ == BvhChoice::lab && data_.acceleration == Acceleration::bvh; }
-    bool occluded_with_kernels(const Ray& ray, Interval t_range) const;
+    bool occluded_with_kernels(const Ray& ray, Interval t_range, std::uint32_t& blocker) const;
     void apply_vertex_normals(Hit& hit, const Ray& ray) const;
 
     SceneData data_;             // primitives: the BVH's ones first, in BVH order, then infinite planes

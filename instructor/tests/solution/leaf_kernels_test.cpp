@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <ostream>
@@ -300,6 +301,68 @@ TEST_P(FastPath, PacketsOfRaysGetTheAnswersOfRaysAlone) {
     EXPECT_GT(misses, 300);
     EXPECT_GT(blocked, 300);
     EXPECT_GT(together, 150); // most bundles walk as packets (the others go one by one)
+}
+
+TEST_P(FastPath, AFormerBlockerTestedFirstChangesNoAnswer) {
+    // Scene::occluded(ray, range, blocker) tests the former blocker first. The
+    // answer must be the one without it whatever it names: nothing, any
+    // primitive, the plane, a primitive the ray meets just beyond the range (the
+    // hint must be held to the range), or no primitive at all; and it must come
+    // back as a primitive that does block the ray, or kNoBlocker. The same for
+    // packets, which may not take a blocker from any but their own rays.
+    const auto [setting, layout] = GetParam();
+    const Scene fast(random_scene(3, 2000, setting.offset, setting.scale, layout), linked_leaf_kernels());
+    const auto primitive_count = static_cast<std::uint32_t>(fast.primitives().size());
+    const auto blocks = [&](const Ray& ray, Interval range, std::uint32_t i) {
+        return i < primitive_count && intersect(ray, fast.primitives()[i], range).has_value();
+    };
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<std::uint32_t> any(0, primitive_count + 2);
+    int blocked = 0, beyond = 0, from_hint = 0;
+    std::uint32_t previous = kNoBlocker;
+    for (int i = 0; i < 3000; ++i) {
+        const Ray ray = random_ray(rng, setting.offset, setting.scale);
+        const std::optional<Hit> hit = fast.closest_hit(ray);
+        const std::uint32_t nearest = hit ? static_cast<std::uint32_t>(std::find_if(fast.primitives().begin(), fast.primitives().end(),
+                                                                                     [&](const Primitive& p) { return p.index == hit->primitive; }) -
+                                                                        fast.primitives().begin())
+                                          : kNoBlocker;
+        // Half the feelers stop just short of the nearest hit: that primitive is then no blocker.
+        const Interval range = hit && i % 2 ? Interval{0.0, hit->t * (1.0 - 1e-9)} : Interval{0.0, 6.0 * setting.scale};
+        const bool expected = fast.occluded(ray, range);
+        for (const std::uint32_t hint : {kNoBlocker, any(rng), primitive_count - 1, nearest, previous}) {
+            std::uint32_t blocker = hint;
+            ASSERT_EQ(fast.occluded(ray, range, blocker), expected) << "ray " << i << " hint " << hint;
+            ASSERT_TRUE(expected ? blocks(ray, range, blocker) : blocker == kNoBlocker) << "ray " << i << " hint " << hint;
+            from_hint += expected && blocker == hint;
+            beyond += !expected && hint == nearest && hint != kNoBlocker;
+        }
+        std::uint32_t blocker = kNoBlocker;
+        fast.occluded(ray, range, blocker);
+        previous = blocker;
+        blocked += expected;
+    }
+    EXPECT_GT(blocked, 150); // many, but not all, feelers are blocked
+    EXPECT_LT(blocked, 2850);
+    EXPECT_GT(from_hint, 300); // the hint itself was the answer
+    EXPECT_GT(beyond, 300);    // the hint lay beyond the range
+
+    for (int b = 0; b < 300; ++b) {
+        const std::vector<Ray> rays = bundle(rng, setting.offset, setting.scale, true, b % 3 == 0 ? 0.05 : 1.5);
+        std::vector<Interval> ranges(rays.size());
+        for (std::size_t i = 0; i < rays.size(); ++i) ranges[i] = Interval{0.0, (3.0 + static_cast<double>(i % 5)) * setting.scale};
+        bool packed[RayPacket::kMaxRays];
+        std::uint32_t blocker = b % 2 ? previous : any(rng);
+        fast.occluded_rays(rays, ranges, std::span<bool>(packed, rays.size()), blocker);
+        bool any_blocked = false, blocker_blocks_one = false;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            ASSERT_EQ(fast.occluded(rays[i], ranges[i]), packed[i]) << "bundle " << b << " ray " << i;
+            any_blocked |= packed[i];
+            blocker_blocks_one |= packed[i] && blocks(rays[i], ranges[i], blocker);
+        }
+        ASSERT_TRUE(any_blocked ? blocker_blocks_one : blocker == kNoBlocker) << "bundle " << b;
+        previous = blocker;
+    }
 }
 
 TEST(FastPath, EqualDistancesInManyLeavesGoToTheLowestIndexAlsoInPackets) {

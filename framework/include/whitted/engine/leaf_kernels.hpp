@@ -32,15 +32,18 @@ struct LeafKernels {
     /// The hit of the ray on the nearest primitive with t inside t_range, if any,
     /// as `intersect()` returns it (primitive and material set, vertex normals not yet applied).
     std::optional<Hit> (*closest)(const SceneView& scene, const Ray& ray, Interval t_range);
-    /// True when any primitive is hit with t inside t_range.
-    bool (*occluded)(const SceneView& scene, const Ray& ray, Interval t_range);
+    /// True when any primitive is hit with t inside t_range. `blocker`, a
+    /// position in `primitives` or kNoBlocker, is tested first (it blocked the
+    /// feeler before); it is set to the primitive found blocking, or kNoBlocker.
+    bool (*occluded)(const SceneView& scene, const Ray& ray, Interval t_range, std::uint32_t& blocker);
     /// closest() for rays[i] within t_ranges[i] into hits[i], up to
     /// RayPacket::kMaxRays rays walking the BVH together: the very same answers.
     void (*closest_packet)(const SceneView& scene, std::span<const Ray> rays, std::span<const Interval> t_ranges,
                            std::span<std::optional<Hit>> hits);
-    /// occluded() for rays[i] within t_ranges[i] into blocked[i], up to RayPacket::kMaxRays rays together.
+    /// occluded() for rays[i] within t_ranges[i] into blocked[i], up to RayPacket::kMaxRays rays
+    /// together; `blocker` is tested first by each and set to one of their blockers, or kNoBlocker.
     void (*occluded_packet)(const SceneView& scene, std::span<const Ray> rays, std::span<const Interval> t_ranges,
-                            std::span<bool> blocked);
+                            std::span<bool> blocked, std::uint32_t& blocker);
 };
 
 /// The kernels this program was linked with: the reference renderer's, or
