@@ -89,6 +89,8 @@ void RayPacket::lanes_one_by_one(std::span<const Ray> rays, double extent) {
         if (i == 0) inverse_scale_ = n.inverse_scale;
         if (n.inverse_scale != inverse_scale_) coherent_ = false; // distances in other units
         for (int axis = 0; axis < 3; ++axis) {
+            // An infinite origin moved by an infinite margin: a NaN would make the packet miss every box.
+            if (std::isnan(n.origin_entry[axis]) || std::isnan(n.origin_exit[axis])) coherent_ = false;
             inv_[axis][i] = n.inv[axis];
             origin_entry_[axis][i] = n.origin_entry[axis];
             origin_exit_[axis][i] = n.origin_exit[axis];
@@ -142,8 +144,8 @@ bool RayPacket::lanes_at_once(std::span<const Ray> rays, std::span<const Interva
     // WideRay::numbers() for four rays at a time, the same operations in the same
     // order (so the same numbers), when every ray's largest direction component
     // has ray 0's binary exponent, the one scale of the packet, and is an
-    // ordinary number (zero, subnormal, infinite and NaN rays, and NaN range
-    // ends, go one by one); the packet's ranges are gathered on the way.
+    // ordinary number (zero, subnormal, infinite and NaN rays, infinite
+    // origins and NaN range ends go one by one); the packet's ranges are gathered on the way.
     const int count = static_cast<int>(rays.size());
     const __m128d sign_bit = _mm_set1_pd(-0.0);
     const Vec3& d0 = rays[0].direction;
@@ -157,6 +159,7 @@ bool RayPacket::lanes_at_once(std::span<const Ray> rays, std::span<const Interva
     const __m128d extent_share = _mm_set1_pd(0x1p-58 * extent);
     const __m128i biased_lanes = _mm_set_epi32(0, biased, 0, biased); // a 64-bit lane's top 12 bits, shifted down
     __m128d odd = _mm_setzero_pd();  // a lane with a NaN
+    __m128 odd_origin = _mm_setzero_ps(); // a NaN from an infinite origin moved by its infinite margin
     __m128i same = _mm_set1_epi32(-1); // lanes whose largest component has ray 0's exponent
     constexpr float kInf = std::numeric_limits<float>::infinity();
     __m128 t_min_low = _mm_set1_ps(kInf);
@@ -212,6 +215,7 @@ bool RayPacket::lanes_at_once(std::span<const Ray> rays, std::span<const Interva
                                               _mm_cvtpd_ps(_mm_sub_pd(origin_23[axis], shift_23)));
             _mm_store_ps(origin_entry_[axis] + first, entry);
             _mm_store_ps(origin_exit_[axis] + first, exit);
+            odd_origin = _mm_or_ps(odd_origin, _mm_cmpunord_ps(entry, exit));
             // The packet's ranges. Positive direction: the entry distance is smallest from the
             // farthest-along origin, the exit distance largest from the least-along one; negative: the reverse.
             inv_low[axis] = _mm_min_ps(inv_low[axis], inv);
@@ -229,7 +233,7 @@ bool RayPacket::lanes_at_once(std::span<const Ray> rays, std::span<const Interva
         _mm_store_ps(t_max_ + first, round_outwards<true>(_mm_mul_pd(t_max_01, inverse_scale), _mm_mul_pd(t_max_23, inverse_scale)));
         t_min_low = _mm_min_ps(t_min_low, t_min);
     }
-    if (_mm_movemask_pd(odd) != 0 || _mm_movemask_epi8(same) != 0xffff) return false;
+    if (_mm_movemask_pd(odd) != 0 || _mm_movemask_ps(odd_origin) != 0 || _mm_movemask_epi8(same) != 0xffff) return false;
     t_min_low_ = lowest_lane(t_min_low);
     for (int axis = 0; axis < 3; ++axis) {
         inv_low_[axis] = lowest_lane(inv_low[axis]);

@@ -117,10 +117,11 @@ class Scene {
 
     /// True when any surface lies along the ray with t inside t_range.
     bool occluded(const Ray& ray, Interval t_range) const;
-    /// occluded(), the same answer, sooner inside a shadow: the reference
-    /// renderer's kernels test first the primitive `blocker` names (the one that
-    /// blocked the feeler before; kNoBlocker: none) and then set it to this
-    /// ray's blocker, or kNoBlocker (the labs' queries leave it alone).
+    /// occluded(), the same answer, sooner inside a shadow. `blocker` is a first
+    /// guess only (the primitive that blocked the feeler before; kNoBlocker:
+    /// none), which cannot change the answer: the reference renderer's kernels
+    /// test it first and then set it to this ray's blocker, or kNoBlocker; the
+    /// labs' queries leave it alone.
     bool occluded(const Ray& ray, Interval t_range, std::uint32_t& blocker) const;
 
     /// closest_hit() for each of several rays (hits[i] for rays[i] within
@@ -131,8 +132,9 @@ class Scene {
 
     /// occluded() for each of several rays (blocked[i] for rays[i] within t_ranges[i]).
     void occluded_rays(std::span<const Ray> rays, std::span<const Interval> t_ranges, std::span<bool> blocked) const;
-    /// occluded_rays() with a former blocker tested first, as occluded(ray, t_range, blocker)
-    /// tests it; it is then set to one of the rays' blockers, or kNoBlocker.
+    /// occluded_rays() with a first guess, as occluded(ray, t_range, blocker) takes it;
+    /// the kernels update it as they go (to the last blocker found, or kNoBlocker
+    /// after an unblocked ray or packet of rays).
     void occluded_rays(std::span<const Ray> rays, std::span<const Interval> t_ranges, std::span<bool> blocked,
                        std::uint32_t& blocker) const;
 

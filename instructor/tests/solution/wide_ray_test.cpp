@@ -199,6 +199,28 @@ TEST(WideRay, PacketLanesHoldWhatEachRayAloneComputes) {
     EXPECT_EQ(packets, 20000);
 }
 
+TEST(WideRay, AnInfiniteOriginInAPacketCostsTheOtherRaysNoBox) {
+    // An infinite origin moved by its (infinite) margin is a NaN, and a NaN in
+    // the packet's ranges failed every box test of the packet (found in review):
+    // the other rays lost their hits. Such a packet now goes one ray at a time.
+    alignas(16) float bounds[6][4];
+    for (int a = 0; a < 3; ++a)
+        for (int l = 0; l < 4; ++l) bounds[2 * a][l] = -100.0f, bounds[2 * a + 1][l] = 100.0f;
+    int tested = 0;
+    for (int count = 1; count <= RayPacket::kMaxRays; ++count)
+        for (int bad = 0; bad < count; ++bad)
+            for (int axis = 0; axis < 3; ++axis) {
+                std::vector<Ray> rays;
+                for (int i = 0; i < count; ++i) rays.push_back(Ray{Point3(0.0), glm::normalize(Vec3(0.01 * i, 0.01, 1.0))});
+                rays[bad].origin[axis] = std::numeric_limits<double>::infinity();
+                const std::vector<Interval> ranges(count, Interval{0.0, 1e3});
+                const RayPacket packet(rays, ranges, 30.0);
+                ASSERT_FALSE(packet.coherent()) << count << " rays, origin[" << axis << "] infinite in lane " << bad;
+                ++tested;
+            }
+    EXPECT_EQ(tested, 3 * RayPacket::kMaxRays * (RayPacket::kMaxRays + 1) / 2);
+}
+
 TEST(WideRay, RangeEndsRoundOutwardsToTheNearestFloats) {
     // numbers() rounds t_min down and t_max up to floats (a unit-size direction
     // keeps t in its own units): the float range must hold the double one, and

@@ -16,7 +16,8 @@
 // on the side of "hit". A packet may visit a box no ray of it meets; it never
 // skips one that any of its rays' exact tests would enter. The rays must share
 // the signs of their direction components and the power of two WideRay scales
-// them by (`coherent()`); the leaf kernels trace the others one by one.
+// them by, and have finite origins (`coherent()`); the leaf kernels trace the
+// others one by one.
 #pragma once
 
 #include "whitted/engine/wide_ray.hpp"
@@ -33,7 +34,7 @@ class RayPacket {
     /// Prepares rays[i] for t in t_ranges[i] (at most kMaxRays rays), for the boxes of a WideBvh of `extent`.
     RayPacket(std::span<const Ray> rays, std::span<const Interval> t_ranges, double extent);
 
-    /// True when the rays may walk together (same direction signs and scale).
+    /// True when the rays may walk together (same direction signs and scale, finite origins).
     bool coherent() const { return coherent_; }
     /// Lane i's numbers, which are WideRay::numbers() of rays[i] (of a coherent packet; for tests).
     WideRay::Numbers lane(int i) const;
