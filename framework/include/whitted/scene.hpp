@@ -59,10 +59,10 @@ class WideBvh;
 class UniformGrid;
 struct LeafKernels;
 struct SceneView;
+struct RemoteSceneQueries;
 
 /// No primitive: the last shadow feeler was not blocked (Scene::occluded).
 inline constexpr std::uint32_t kNoBlocker = 0xffffffffu;
-struct RemoteSceneQueries;
 
 class Scene {
   public:

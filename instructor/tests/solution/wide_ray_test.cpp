@@ -203,9 +203,6 @@ TEST(WideRay, AnInfiniteOriginInAPacketCostsTheOtherRaysNoBox) {
     // An infinite origin moved by its (infinite) margin is a NaN, and a NaN in
     // the packet's ranges failed every box test of the packet (found in review):
     // the other rays lost their hits. Such a packet now goes one ray at a time.
-    alignas(16) float bounds[6][4];
-    for (int a = 0; a < 3; ++a)
-        for (int l = 0; l < 4; ++l) bounds[2 * a][l] = -100.0f, bounds[2 * a + 1][l] = 100.0f;
     int tested = 0;
     for (int count = 1; count <= RayPacket::kMaxRays; ++count)
         for (int bad = 0; bad < count; ++bad)
