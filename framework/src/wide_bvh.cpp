@@ -80,7 +80,12 @@ struct Collapser {
 
 } // namespace
 
-WideBvh::WideBvh(const Bvh& binary) {
+WideBvh::WideBvh(const Bvh& binary, BoxTest box_test) {
+#if WHITTED_AVX2_WALK
+    avx2_ = box_test == BoxTest::best && __builtin_cpu_supports("avx2");
+#else
+    (void)box_test;
+#endif
     const std::span<const Bvh::Node> tree = binary.nodes();
     if (tree.empty()) return;
     const Aabb& root = tree[0].bounds;

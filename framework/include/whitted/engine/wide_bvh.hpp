@@ -15,6 +15,11 @@
 // The tree is collapsed from the binary SAH tree of `Bvh` (whose primitive
 // order it keeps): each node adopts the children of its largest inner children
 // until it has eight.
+//
+// The build targets plain x86-64 (SSE2), which tests a node's eight boxes in two
+// halves. Where the CPU has AVX2 (checked once, when the tree is built), the walks
+// run a copy compiled for AVX2 that tests all eight at once: the same operations
+// on the same numbers, so the same leaves in the same order (issue 17: 2-4 %).
 #pragma once
 
 #include "whitted/engine/bvh.hpp"
@@ -44,10 +49,17 @@ class WideBvh {
 
     static_assert(sizeof(Node) == 256, "a node is four cache lines");
 
+    /// How the walks test a node's boxes: `best` is AVX2 where the CPU has it,
+    /// else SSE2 (the same answers, bit for bit; tests compare the two).
+    enum class BoxTest { best, sse2 };
+
     WideBvh() = default;
 
     /// Collapses the binary tree into eight-wide nodes (same primitive order).
-    explicit WideBvh(const Bvh& binary);
+    explicit WideBvh(const Bvh& binary, BoxTest box_test = BoxTest::best);
+
+    /// True when the walks test boxes with AVX2.
+    bool walks_with_avx2() const { return avx2_; }
 
     std::span<const Node> nodes() const { return nodes_; }
     /// Bytes of the nodes.
@@ -60,31 +72,68 @@ class WideBvh {
     /// new t_max (smaller after a hit) or a negative number to stop.
     template <bool kNearestFirst = true, class LeafFn>
     void traverse(const Ray& ray, double t_min, double t_max, LeafFn&& leaf) const {
-        traverse_impl<kNearestFirst, false>(ray, t_min, t_max, leaf, nullptr);
+#if WHITTED_AVX2_WALK
+        if (avx2_) return traverse_avx2<kNearestFirst>(ray, t_min, t_max, leaf);
+#endif
+        traverse_impl<kNearestFirst, false, false>(ray, t_min, t_max, leaf, nullptr);
     }
 
     /// traverse(), also adding to `nodes_tested` each node whose boxes it tests (the `cost` pass).
     template <bool kNearestFirst = true, class LeafFn>
     void traverse_counting(const Ray& ray, double t_min, double t_max, LeafFn&& leaf, std::uint64_t& nodes_tested) const {
-        traverse_impl<kNearestFirst, true>(ray, t_min, t_max, leaf, &nodes_tested);
+        traverse_impl<kNearestFirst, true, false>(ray, t_min, t_max, leaf, &nodes_tested);
     }
 
     /// Walks the tree with a coherent packet: visits each leaf some of its active
     /// rays may meet (nearer boxes first), calling `leaf(first, count, rays)` with
     /// those rays' bits; the callback shrinks or retires rays through `packet`.
     template <bool kNearestFirst = true, class LeafFn>
-    void traverse_packet(RayPacket& packet, LeafFn&& leaf) const;
+    void traverse_packet(RayPacket& packet, LeafFn&& leaf) const {
+#if WHITTED_AVX2_WALK
+        if (avx2_) return traverse_packet_avx2<kNearestFirst>(packet, leaf);
+#endif
+        traverse_packet_impl<kNearestFirst, false>(packet, leaf);
+    }
 
   private:
-    template <bool kNearestFirst, bool kCount, class LeafFn>
-    void traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& leaf, std::uint64_t* nodes_tested) const;
+    // The walk; kAvx2: the node test is WideRay::hit_eight_boxes_avx2, and the
+    // caller must be compiled for AVX2 (traverse_avx2), into which it is inlined.
+    template <bool kNearestFirst, bool kCount, bool kAvx2, class LeafFn>
+    [[gnu::always_inline]] inline void traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& leaf,
+                                              std::uint64_t* nodes_tested) const;
+
+    // A node's box test by `tester`, a WideRay or a RayPacket: in AVX2 when kAvx2.
+    template <bool kAvx2, class Tester>
+    [[gnu::always_inline]] static unsigned test_node(const Tester& tester, const Node& node, float (&t_entry)[kWidth]) {
+#if WHITTED_AVX2_WALK
+        if constexpr (kAvx2) return tester.hit_eight_boxes_avx2(node.bounds, t_entry);
+#endif
+        return tester.hit_boxes(node.bounds, t_entry);
+    }
+
+    // The packet's walk; kAvx2 as for traverse_impl.
+    template <bool kNearestFirst, bool kAvx2, class LeafFn>
+    [[gnu::always_inline]] inline void traverse_packet_impl(RayPacket& packet, LeafFn& leaf) const;
+
+#if WHITTED_AVX2_WALK
+    // The walks compiled for AVX2, the leaf callback with them (only where the CPU has AVX2).
+    template <bool kNearestFirst, class LeafFn>
+    [[gnu::target("avx2"), gnu::noinline]] void traverse_avx2(const Ray& ray, double t_min, double t_max, LeafFn& leaf) const {
+        traverse_impl<kNearestFirst, false, true>(ray, t_min, t_max, leaf, nullptr);
+    }
+    template <bool kNearestFirst, class LeafFn>
+    [[gnu::target("avx2"), gnu::noinline]] void traverse_packet_avx2(RayPacket& packet, LeafFn& leaf) const {
+        traverse_packet_impl<kNearestFirst, true>(packet, leaf);
+    }
+#endif
 
     std::vector<Node> nodes_;
     std::uint32_t root_count_ = 0; // primitives when the root is a leaf (nodes_ empty)
     double extent_ = 0.0;
+    bool avx2_ = false;
 };
 
-template <bool kNearestFirst, bool kCount, class LeafFn>
+template <bool kNearestFirst, bool kCount, bool kAvx2, class LeafFn>
 void WideBvh::traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& leaf, std::uint64_t* nodes_tested) const {
     if (nodes_.empty()) {
         if (root_count_ > 0) leaf(0u, root_count_, t_max);
@@ -104,7 +153,7 @@ void WideBvh::traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& 
             const Node& node = nodes_[current];
             if constexpr (kCount) ++*nodes_tested;
             float t_entry[kWidth];
-            unsigned mask = wide.hit_boxes(node.bounds, t_entry);
+            unsigned mask = test_node<kAvx2>(wide, node, t_entry);
             if (mask == 0) goto pop;
             int first = __builtin_ctz(mask);
             mask &= mask - 1;
@@ -144,8 +193,8 @@ void WideBvh::traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& 
     }
 }
 
-template <bool kNearestFirst, class LeafFn>
-void WideBvh::traverse_packet(RayPacket& packet, LeafFn&& leaf) const {
+template <bool kNearestFirst, bool kAvx2, class LeafFn>
+void WideBvh::traverse_packet_impl(RayPacket& packet, LeafFn& leaf) const {
     if (nodes_.empty()) {
         if (root_count_ > 0 && packet.active() != 0) leaf(0u, root_count_, packet.active());
         return;
@@ -166,11 +215,16 @@ void WideBvh::traverse_packet(RayPacket& packet, LeafFn&& leaf) const {
     for (;;) {
         const Node& node = nodes_[current];
         float t_entry[kWidth];
-        unsigned mask = packet.hit_boxes(node.bounds, t_entry);
+        unsigned mask = test_node<kAvx2>(packet, node, t_entry);
         const int base = top;
         for (; mask != 0; mask &= mask - 1) {
             const int i = __builtin_ctz(mask);
-            const unsigned rays = packet.rays_meeting(node.bounds, i, current_rays);
+            unsigned rays;
+#if WHITTED_AVX2_WALK
+            if constexpr (kAvx2) rays = packet.rays_meeting_avx2(node.bounds, i, current_rays);
+            else
+#endif
+                rays = packet.rays_meeting(node.bounds, i, current_rays);
             if (rays == 0) continue;
             stack[top] = {node.child[i], t_entry[i], rays};
             if constexpr (kNearestFirst)
