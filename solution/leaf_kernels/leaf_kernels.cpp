@@ -161,9 +161,11 @@ std::optional<Hit> nearest_hit(const SceneView& scene, const Ray& ray, const Nea
 }
 
 // The scene's closest-hit query: planes first, then the BVH, nearer boxes first.
+// A single ray's leaf search is inlined into the walk (1 % on every scene; a
+// packet's is not, which measured level or slower).
 std::optional<Hit> closest(const SceneView& scene, const Ray& ray, Interval t_range) {
     Nearest nearest = nearest_plane(scene, ray, t_range);
-    scene.bvh.traverse(ray, t_range.min, nearest.t, [&](std::uint32_t first, std::uint32_t count, double) {
+    scene.bvh.traverse(ray, t_range.min, nearest.t, [&](std::uint32_t first, std::uint32_t count, double) __attribute__((always_inline)) {
         nearest.test_leaf(ray, scene, first, count, t_range.min);
         return nearest.t;
     });
@@ -208,7 +210,7 @@ bool blocks(const SceneView& scene, const Ray& ray, std::uint32_t i, Interval t_
 // one the walk finds), or kNoBlocker: any hit will do, so the first one ends it.
 std::uint32_t bvh_blocker(const SceneView& scene, const Ray& ray, Interval t_range) {
     std::uint32_t found = kNoBlocker;
-    scene.bvh.traverse<false>(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
+    scene.bvh.traverse<false>(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) __attribute__((always_inline)) {
         found = leaf_blocker(ray, scene, first, count, Interval{t_range.min, t_max});
         return found != kNoBlocker ? -1.0 : t_max;
     });
