@@ -139,9 +139,14 @@ struct Nearest {
 };
 
 // The infinite planes, which the BVH does not hold: tested first, so that a hit
-// there shortens the range the BVH must search.
-Nearest nearest_plane(const SceneView& scene, const Ray& ray, Interval t_range) {
-    Nearest nearest{t_range.max};
+// there shortens the range the BVH must search. `nearest` starts the search
+// afresh; it is filled in place (a packet's Nearest built aside and then copied
+// was read back in 16-byte pieces from smaller stores, a stall on every ray).
+void nearest_plane(const SceneView& scene, const Ray& ray, Interval t_range, Nearest& nearest) {
+    nearest.t = t_range.max;
+    nearest.index = Nearest::kNoPrimitive;
+    nearest.plane = 0;
+    nearest.found = false;
     TriangleDistance unused;
     for (std::size_t i = scene.bounded_count; i < scene.primitives.size(); ++i) {
         if (const double t = distance(ray, scene.primitives[i], Interval{t_range.min, nearest.t}, unused); t != kMiss) {
@@ -150,7 +155,6 @@ Nearest nearest_plane(const SceneView& scene, const Ray& ray, Interval t_range) 
             nearest.plane = static_cast<std::uint32_t>(i);
         }
     }
-    return nearest;
 }
 
 // The hit the search found, built once.
@@ -164,7 +168,8 @@ std::optional<Hit> nearest_hit(const SceneView& scene, const Ray& ray, const Nea
 // A single ray's leaf search is inlined into the walk (1 % on every scene; a
 // packet's is not, which measured level or slower).
 std::optional<Hit> closest(const SceneView& scene, const Ray& ray, Interval t_range) {
-    Nearest nearest = nearest_plane(scene, ray, t_range);
+    Nearest nearest{t_range.max};
+    nearest_plane(scene, ray, t_range, nearest);
     scene.bvh.traverse(ray, t_range.min, nearest.t, [&](std::uint32_t first, std::uint32_t count, double) __attribute__((always_inline)) {
         nearest.test_leaf(ray, scene, first, count, t_range.min);
         return nearest.t;
@@ -237,7 +242,7 @@ void closest_packet(const SceneView& scene, std::span<const Ray> rays, std::span
     }
     Nearest nearest[RayPacket::kMaxRays];
     for (std::size_t r = 0; r < rays.size(); ++r) {
-        nearest[r] = nearest_plane(scene, rays[r], t_ranges[r]);
+        nearest_plane(scene, rays[r], t_ranges[r], nearest[r]);
         if (nearest[r].found) packet.shrink(static_cast<int>(r), nearest[r].t);
     }
     packet.refresh_t_max();
