@@ -80,12 +80,15 @@ struct Collapser {
 
 } // namespace
 
-WideBvh::WideBvh(const Bvh& binary, BoxTest box_test) {
+bool WideBvh::cpu_has_avx2() {
 #if WHITTED_AVX2_WALK
-    avx2_ = box_test == BoxTest::best && __builtin_cpu_supports("avx2");
+    return __builtin_cpu_supports("avx2");
 #else
-    (void)box_test;
+    return false;
 #endif
+}
+
+WideBvh::WideBvh(const Bvh& binary, BoxTest box_test) : avx2_(box_test == BoxTest::best && cpu_has_avx2()) {
     const std::span<const Bvh::Node> tree = binary.nodes();
     if (tree.empty()) return;
     const Aabb& root = tree[0].bounds;

@@ -28,11 +28,27 @@ namespace {
 bool cpu_has_avx2() { return __builtin_cpu_supports("avx2"); }
 
 // Rays of every kind the walk meets: unit and far from unit length, components
-// of 0 and of tiny and huge size, origins near and far, finite and infinite ranges.
+// of 0 and of tiny and huge size, origins near and far, finite and infinite
+// ranges; and one in sixteen with an infinite, NaN or beyond-float number, whose
+// NaN distances must meet the same lane-wise rules (max and min keep their
+// second operand's NaN) in AVX2 as in SSE2.
 struct RayMaker {
     std::mt19937 rng{2026};
     std::uniform_real_distribution<double> unit{-1.0, 1.0}, position{-50.0, 50.0}, spread{0.98, 1.02};
-    std::uniform_int_distribution<int> exponent{-40, 40}, special{0, 11};
+    std::uniform_int_distribution<int> exponent{-40, 40}, special{0, 11}, odd{0, 15}, axis{0, 2};
+
+    // An infinity, a NaN or a number no float holds, now and then.
+    double odd_number(double usual) {
+        switch (odd(rng)) {
+        case 0: return std::numeric_limits<double>::infinity();
+        case 1: return -std::numeric_limits<double>::infinity();
+        case 2: return std::numeric_limits<double>::quiet_NaN();
+        case 3: return 1e39;
+        case 4: return -1e300;
+        default: return usual;
+        }
+    }
+    bool now_and_then() { return odd(rng) == 0; }
 
     Vec3 direction() {
         Vec3 d(unit(rng), unit(rng), unit(rng));
@@ -43,14 +59,22 @@ struct RayMaker {
         case 3: d = Vec3(0.0, 0.0, d.z < 0.0 ? -1.0 : 1.0); break;
         default: break;
         }
-        return std::ldexp(1.0, exponent(rng)) * d;
+        d = std::ldexp(1.0, exponent(rng)) * d;
+        if (now_and_then()) d[axis(rng)] = odd_number(d.x);
+        return d;
     }
-    Point3 origin() { return std::ldexp(1.0, exponent(rng) / 4) * Point3(position(rng), position(rng), position(rng)); }
+    Point3 origin() {
+        Point3 o = std::ldexp(1.0, exponent(rng) / 4) * Point3(position(rng), position(rng), position(rng));
+        if (now_and_then()) o[axis(rng)] = odd_number(o.y);
+        return o;
+    }
     Interval range() {
         const int kind = special(rng);
         if (kind < 4) return Interval{};
         const double from = kind < 8 ? 0.0 : std::abs(position(rng));
-        return Interval{from, from + std::ldexp(std::abs(position(rng)), exponent(rng) / 2)};
+        Interval range{from, from + std::ldexp(std::abs(position(rng)), exponent(rng) / 2)};
+        if (now_and_then()) range.max = odd_number(range.max);
+        return range;
     }
 };
 
@@ -128,7 +152,8 @@ TEST(Avx2Walk, PacketTestsGiveTheSse2Bits) {
         const Vec3 sign(p & 1 ? -1.0 : 1.0, p & 2 ? -1.0 : 1.0, p & 4 ? -1.0 : 1.0);
         alignas(32) float bounds[6][8];
         random_boxes(rng, bounds);
-        const Point3 o0(position(rng), position(rng), position(rng));
+        // One packet in 32 from beyond what a float holds: NaN and infinite distances in its lanes.
+        const Point3 o0 = (p % 32 == 5 ? 1e39 : 1.0) * Point3(position(rng), position(rng), position(rng));
         const int aim = p % 8; // the packet aimed at a box's centre when it has one
         const Vec3 d0 = bounds[0][aim] <= bounds[1][aim] ? box_centre(bounds, aim) - o0 : sign * Vec3(unit(rng), unit(rng), 1.0);
         const int n = count(rng);

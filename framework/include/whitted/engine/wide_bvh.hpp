@@ -19,7 +19,8 @@
 // The build targets plain x86-64 (SSE2), which tests a node's eight boxes in two
 // halves. Where the CPU has AVX2 (checked once, when the tree is built), the walks
 // run a copy compiled for AVX2 that tests all eight at once: the same operations
-// on the same numbers, so the same leaves in the same order (issue 17: 2-4 %).
+// on the same numbers, so the same leaves in the same order (issue 17: 2-4 % on
+// most scenes, tetra6 level). `whitted --version` says which one this CPU runs.
 #pragma once
 
 #include "whitted/engine/bvh.hpp"
@@ -60,6 +61,8 @@ class WideBvh {
 
     /// True when the walks test boxes with AVX2.
     bool walks_with_avx2() const { return avx2_; }
+    /// True when this CPU has AVX2, so that trees built with BoxTest::best walk with it.
+    static bool cpu_has_avx2();
 
     std::span<const Node> nodes() const { return nodes_; }
     /// Bytes of the nodes.

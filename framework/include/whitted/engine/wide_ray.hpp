@@ -1,4 +1,4 @@
-// A ray prepared for testing float boxes four at once, conservatively.
+// A ray prepared for testing float boxes four (SSE2) or eight (AVX2) at once, conservatively.
 //
 // Why: the wide BVH stores boxes in float and tests four per instruction, but a
 // box test that rounds the wrong way would lose a hit the exact test finds: a
@@ -157,7 +157,7 @@ class WideRay {
                 _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(bounds[near_[axis]]), _mm256_set1_ps(origin_entry_[axis][0])), inv);
             const __m256 t_far =
                 _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(bounds[far_[axis]]), _mm256_set1_ps(origin_exit_[axis][0])), inv);
-            entry = _mm256_max_ps(entry, t_near); // a NaN distance wins, as in _mm_max_ps: no hit
+            entry = _mm256_max_ps(entry, t_near); // a NaN keeps _mm_max_ps's rule (the second operand wins): the same bits
             exit = _mm256_min_ps(exit, t_far);
         }
         _mm256_storeu_ps(t_entry, entry);
