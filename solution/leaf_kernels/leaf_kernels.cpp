@@ -1,9 +1,8 @@
 // The reference renderer's leaf kernels: the BVH walk with hit distances only.
 // Spheres, planes and triangles go through the reference lab 1's own distance
-// arithmetic (../01_ray_casting_distances.hpp, inline, with which lab 1 defines
-// whitted/engine/hit_distances.hpp's functions), boxes and cones through the
-// framework's intersections, so the nearest primitive and its distance are the
-// labs' own, bit for bit, by construction. The one exception,
+// functions (whitted/engine/hit_distances.hpp, defined in solution/01), boxes and
+// cones through the framework's intersections, so the nearest primitive and its
+// distance are the labs' own, bit for bit, by construction. The one exception,
 // two neighbouring triangles tested at once (screens.hpp), repeats lab 1's
 // triangle test operation for operation, and a test holds it to that.
 //
@@ -11,8 +10,6 @@
 // student handout ships framework/ but not solution/.
 #include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/engine/hit_distances.hpp"
-
-#include "../01_ray_casting_distances.hpp"
 
 #include "screens.hpp"
 #include "whitted/scene.hpp"
@@ -41,14 +38,14 @@ inline double next_up(double t) {
 // for a triangle, also where on it (`on_triangle`), to build its hit from later.
 inline double distance(const Ray& ray, const Primitive& primitive, Interval t_range, TriangleDistance& on_triangle) {
     const Shape& shape = primitive.shape;
-    if (const auto* sphere = std::get_if<Sphere>(&shape)) return lab1::sphere_distance(ray, *sphere, t_range).value_or(kMiss);
+    if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere_distance(ray, *sphere, t_range).value_or(kMiss);
     if (const auto* triangle = std::get_if<Triangle>(&shape)) {
-        const std::optional<TriangleDistance> found = lab1::triangle_distance(ray, *triangle, t_range);
+        const std::optional<TriangleDistance> found = triangle_distance(ray, *triangle, t_range);
         if (!found) return kMiss;
         on_triangle = *found;
         return found->t;
     }
-    if (const auto* plane = std::get_if<Plane>(&shape)) return lab1::plane_distance(ray, *plane, t_range).value_or(kMiss);
+    if (const auto* plane = std::get_if<Plane>(&shape)) return plane_distance(ray, *plane, t_range).value_or(kMiss);
     const std::optional<Hit> hit = std::holds_alternative<Box>(shape) ? intersect_box(ray, std::get<Box>(shape), t_range)
                                                                       : intersect_cone(ray, std::get<Cone>(shape), t_range);
     return hit ? hit->t : kMiss;

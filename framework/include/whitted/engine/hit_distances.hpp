@@ -3,12 +3,11 @@
 // Why: the reference renderer's leaf kernels (see leaf_kernels.hpp) test many
 // candidates per ray and want only the nearest one's distance, while lab 1's
 // intersect_sphere/plane/triangle also build a Hit. The reference lab 1 defines
-// these three functions and builds its hits from them, and the kernels inline
-// the very arithmetic these functions run (one inline copy of it in the
-// reference lab), so both paths agree bit for bit because there is one copy
+// these three functions and builds its hits from them, and the kernels call the
+// very same functions, so both paths agree bit for bit because there is one copy
 // of the arithmetic (as pbrt-v4's shapes feed both their intersection queries
 // from one BasicIntersect). A student's lab 1 need not define them: only the
-// reference renderer uses them.
+// reference renderer calls them.
 #pragma once
 
 #include "whitted/hit.hpp"
