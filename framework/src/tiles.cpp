@@ -7,10 +7,65 @@
 #include <thread>
 #include <vector>
 
+#if defined(__linux__)
+#include <pthread.h>
+#include <sched.h>
+#endif
+
 namespace whitted {
 namespace {
 
 constexpr int kTileSize = 16;
+
+// Keeps each thread of for_each_tile on a processor of its own while it runs.
+//
+// Why: Linux starts a new thread on its parent's processor and moves it only
+// after a few milliseconds, so for a short render the two threads of a two-core
+// machine share one core (measured here: 2 x 10 ms of work took 17-18 ms,
+// pinned 14 ms). Each thread is pinned to its own processor of the set the
+// process may run on, when there are enough of them; the caller's own setting
+// comes back when the work is done.
+class ThreadPlacement {
+  public:
+    explicit ThreadPlacement(int threads) {
+#if defined(__linux__)
+        if (threads < 2 || pthread_getaffinity_np(pthread_self(), sizeof allowed_, &allowed_) != 0) return;
+        for (int cpu = 0; cpu < CPU_SETSIZE && static_cast<int>(cpus_.size()) < threads; ++cpu)
+            if (CPU_ISSET(cpu, &allowed_)) cpus_.push_back(cpu);
+        if (static_cast<int>(cpus_.size()) < threads) cpus_.clear(); // fewer processors than threads: leave it to the system
+#else
+        (void)threads;
+#endif
+    }
+    ThreadPlacement(const ThreadPlacement&) = delete;
+    ThreadPlacement& operator=(const ThreadPlacement&) = delete;
+
+    /// Pins the calling thread, for_each_tile's thread `index`, to its processor.
+    void pin(int index) const {
+#if defined(__linux__)
+        if (cpus_.empty()) return;
+        cpu_set_t one;
+        CPU_ZERO(&one);
+        CPU_SET(cpus_[static_cast<std::size_t>(index)], &one);
+        pthread_setaffinity_np(pthread_self(), sizeof one, &one); // a refusal only costs speed
+#else
+        (void)index;
+#endif
+    }
+
+    /// Gives the calling thread (the caller's, thread 0) back the processors it had.
+    ~ThreadPlacement() {
+#if defined(__linux__)
+        if (!cpus_.empty()) pthread_setaffinity_np(pthread_self(), sizeof allowed_, &allowed_);
+#endif
+    }
+
+  private:
+#if defined(__linux__)
+    cpu_set_t allowed_{};
+#endif
+    std::vector<int> cpus_;
+};
 
 } // namespace
 
@@ -31,7 +86,9 @@ int for_each_tile(int width, int height, int threads, const std::function<TileFu
     std::atomic<int> next_tile{0};
     std::exception_ptr failure;
     std::mutex failure_mutex;
+    const ThreadPlacement placement(threads);
     auto worker = [&](int thread_index) {
+        placement.pin(thread_index);
         try {
             const TileFunction per_tile = for_thread(thread_index);
             for (int index = next_tile++; index < tiles; index = next_tile++) {
