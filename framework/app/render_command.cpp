@@ -147,8 +147,11 @@ int run_render(const RenderOptions& options) {
                                : options.pass ? stem + "_" + std::string(pass_info(*options.pass).name) + ".png"
                                               : stem + ".png";
     // A NaN or infinite colour is a bug in the shading code: show it, loudly.
+    // (Marked on a copy, and only then: copying a big image costs a page fault per 4 KiB.)
     const std::size_t broken = count_non_finite(result.image);
-    write_image(with_broken_pixels_marked(result.image), output, options.srgb ? Encoding::srgb : Encoding::linear);
+    const Encoding encoding = options.srgb ? Encoding::srgb : Encoding::linear;
+    if (broken == 0) write_image(result.image, output, encoding);
+    else write_image(with_broken_pixels_marked(result.image), output, encoding);
     if (!options.quiet) {
         std::printf("wrote %s (%dx%d, stage %d%s%s): rendered in %.3f s, scene loaded and built in %.3f s\n",
                     std::filesystem::absolute(output).lexically_normal().c_str(), width, height, *stage,

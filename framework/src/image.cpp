@@ -76,21 +76,23 @@ void write_ppm(const Image& image, const std::filesystem::path& path, Encoding e
 /// Writes an RGB PFM: little-endian floats (scale -1.0), bottom row first as the format requires.
 /// Values beyond the float range are clamped to the largest float, so no infinity is written.
 void write_pfm(const Image& image, const std::filesystem::path& path) {
-    std::vector<unsigned char> bytes;
-    bytes.reserve(image.pixels.size() * 12);
+    std::ofstream out = open_for_writing(path);
+    out << "PF\n" << image.width << ' ' << image.height << "\n-1.0\n";
+    // A row at a time: a buffer of the whole image would cost a page fault per 4 KiB of it.
+    std::vector<unsigned char> row;
+    row.reserve(static_cast<std::size_t>(image.width) * 12);
     for (int y = image.height - 1; y >= 0; --y) {
+        row.clear();
         for (int x = 0; x < image.width; ++x) {
             for (int k = 0; k < 3; ++k) {
                 constexpr double kLargestFloat = std::numeric_limits<float>::max();
                 const double value = std::clamp(image.at(x, y)[k], -kLargestFloat, kLargestFloat);
                 const auto bits = std::bit_cast<std::uint32_t>(static_cast<float>(value));
-                for (int shift = 0; shift < 32; shift += 8) bytes.push_back(static_cast<unsigned char>(bits >> shift));
+                for (int shift = 0; shift < 32; shift += 8) row.push_back(static_cast<unsigned char>(bits >> shift));
             }
         }
+        out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size()));
     }
-    std::ofstream out = open_for_writing(path);
-    out << "PF\n" << image.width << ' ' << image.height << "\n-1.0\n";
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
     finish_writing(out, path);
 }
 
