@@ -19,20 +19,25 @@ constexpr int kTileSize = 16;
 
 // Keeps each thread of for_each_tile on a processor of its own while it runs.
 //
-// Why: Linux starts a new thread on its parent's processor and moves it only
-// after a few milliseconds, so for a short render the two threads of a two-core
-// machine share one core (measured here: 2 x 10 ms of work took 17-18 ms,
-// pinned 14 ms). Each thread is pinned to its own processor of the set the
-// process may run on, when there are enough of them; the caller's own setting
-// comes back when the work is done.
+// Why: Linux puts a new thread on its creator's processor, where it waits
+// for the creator's time slice to end (about 4 ms here) and shares that
+// processor until the system moves one of them, so the two threads of a short
+// render often ran on one processor for much of it (measured: two threads of
+// 10 ms of work each took 17-18 ms together). When the threads take every
+// processor the caller may use, each is created while the caller runs on that
+// thread's processor, so it starts there at once and stays there (10.5 ms);
+// the caller then takes the first one, and gets its own set back at the end.
+// With fewer threads than processors nothing is pinned (every call, in every
+// process, would pick the same ones), nor with more.
 class ThreadPlacement {
   public:
+    /// Plans the processors of `threads` threads: one each, or none when they are not as many as the caller's.
     explicit ThreadPlacement(int threads) {
 #if defined(__linux__)
         if (threads < 2 || pthread_getaffinity_np(pthread_self(), sizeof allowed_, &allowed_) != 0) return;
-        for (int cpu = 0; cpu < CPU_SETSIZE && static_cast<int>(cpus_.size()) < threads; ++cpu)
+        if (CPU_COUNT(&allowed_) != threads) return;
+        for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
             if (CPU_ISSET(cpu, &allowed_)) cpus_.push_back(cpu);
-        if (static_cast<int>(cpus_.size()) < threads) cpus_.clear(); // fewer processors than threads: leave it to the system
 #else
         (void)threads;
 #endif
@@ -40,14 +45,15 @@ class ThreadPlacement {
     ThreadPlacement(const ThreadPlacement&) = delete;
     ThreadPlacement& operator=(const ThreadPlacement&) = delete;
 
-    /// Pins the calling thread, for_each_tile's thread `index`, to its processor.
-    void pin(int index) const {
+    /// Moves the calling thread (for_each_tile's caller) to thread `index`'s
+    /// processor: a thread it creates now starts there.
+    void move_caller_to(int index) const {
 #if defined(__linux__)
         if (cpus_.empty()) return;
         cpu_set_t one;
         CPU_ZERO(&one);
         CPU_SET(cpus_[static_cast<std::size_t>(index)], &one);
-        pthread_setaffinity_np(pthread_self(), sizeof one, &one); // a refusal only costs speed
+        pthread_setaffinity_np(pthread_self(), sizeof one, &one); // a refusal (a sandbox) only costs speed
 #else
         (void)index;
 #endif
@@ -88,7 +94,6 @@ int for_each_tile(int width, int height, int threads, const std::function<TileFu
     std::mutex failure_mutex;
     const ThreadPlacement placement(threads);
     auto worker = [&](int thread_index) {
-        placement.pin(thread_index);
         try {
             const TileFunction per_tile = for_thread(thread_index);
             for (int index = next_tile++; index < tiles; index = next_tile++) {
@@ -107,7 +112,11 @@ int for_each_tile(int width, int height, int threads, const std::function<TileFu
     };
     {
         std::vector<std::jthread> pool;
-        for (int i = 1; i < threads; ++i) pool.emplace_back(worker, i);
+        for (int i = 1; i < threads; ++i) {
+            placement.move_caller_to(i); // thread i inherits that processor
+            pool.emplace_back(worker, i);
+        }
+        placement.move_caller_to(0);
         worker(0);
     } // joins
     if (failure) std::rethrow_exception(failure);

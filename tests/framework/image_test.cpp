@@ -1,6 +1,7 @@
 // Image files: round trips through PNG, PPM and PFM, the 8-bit encoding, and
 // malformed or unwritable files reported as ImageError rather than crashes.
 #include "whitted/image.hpp"
+#include "whitted/image_pictures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -262,4 +263,16 @@ TEST(PfmFiles, ClampValuesBeyondTheFloatRangeInsteadOfWritingInfinity) {
     EXPECT_EQ(back.at(0, 0).x, static_cast<double>(std::numeric_limits<float>::max()));
     EXPECT_EQ(back.at(0, 0).y, -static_cast<double>(std::numeric_limits<float>::max()));
     std::filesystem::remove(path);
+}
+
+TEST(ImagePictures, BrokenPixelsAreMarkedMagentaAndTheOthersKept) {
+    // What `whitted render` writes when a lab's shading gives NaN or infinite colours.
+    Image image(3, 1, Color(0.25, 0.5, 0.75));
+    image.at(0, 0) = Color(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
+    image.at(2, 0) = Color(0.0, std::numeric_limits<double>::infinity(), 0.0);
+    const Image shown = with_broken_pixels_marked(image);
+    EXPECT_EQ(shown.at(0, 0), Color(1.0, 0.0, 1.0));
+    EXPECT_EQ(shown.at(1, 0), Color(0.25, 0.5, 0.75));
+    EXPECT_EQ(shown.at(2, 0), Color(1.0, 0.0, 1.0));
+    EXPECT_EQ(count_non_finite(image), 2u);
 }

@@ -18,21 +18,8 @@ using namespace whitted;
 
 namespace {
 
-// How many times each pixel of a width x height image was handed out.
-std::vector<int> pixel_visits(int width, int height, int threads) {
-    std::vector<std::atomic<int>> visits(static_cast<std::size_t>(width) * height);
-    for_each_tile(width, height, threads, [&](int) -> TileFunction {
-        return [&](const Tile& tile) {
-            for (int y = tile.y0; y < tile.y1; ++y)
-                for (int x = tile.x0; x < tile.x1; ++x) ++visits[static_cast<std::size_t>(y) * width + x];
-        };
-    });
-    std::vector<int> counts;
-    for (const auto& v : visits) counts.push_back(v.load());
-    return counts;
-}
-
 #if defined(__linux__)
+// The processors the calling thread may run on.
 cpu_set_t own_processors() {
     cpu_set_t set;
     CPU_ZERO(&set);
@@ -46,6 +33,28 @@ bool may_pin() {
     return pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0;
 }
 #endif
+
+// How many times each pixel of a width x height image was handed out (and the caller's processors come back).
+std::vector<int> pixel_visits(int width, int height, int threads) {
+#if defined(__linux__)
+    const cpu_set_t before = own_processors();
+#endif
+    std::vector<std::atomic<int>> visits(static_cast<std::size_t>(width) * height);
+    for_each_tile(width, height, threads, [&](int) -> TileFunction {
+        return [&](const Tile& tile) {
+            for (int y = tile.y0; y < tile.y1; ++y)
+                for (int x = tile.x0; x < tile.x1; ++x) ++visits[static_cast<std::size_t>(y) * width + x];
+        };
+    });
+#if defined(__linux__)
+    const cpu_set_t after = own_processors();
+    EXPECT_TRUE(CPU_EQUAL(&before, &after)) << threads << " threads: the caller kept the processor it was pinned to";
+#endif
+    std::vector<int> counts;
+    for (const auto& v : visits) counts.push_back(v.load());
+    return counts;
+}
+
 
 } // namespace
 
@@ -69,12 +78,13 @@ TEST(Tiles, EachThreadRunsOnAProcessorOfItsOwnAndTheCallerGetsItsOwnBack) {
     if (!may_pin()) GTEST_SKIP() << "this process may not choose its threads' processors";
     std::mutex mutex;
     std::vector<cpu_set_t> placements;
-    for_each_tile(64, 64, 2, [&](int) -> TileFunction {
+    // As many threads as processors: each gets one (the case of `whitted render` on the whole machine).
+    for_each_tile(16 * processors, 16, processors, [&](int) -> TileFunction {
         std::lock_guard lock(mutex);
         placements.push_back(own_processors());
         return [](const Tile&) {};
     });
-    ASSERT_EQ(placements.size(), 2u);
+    ASSERT_EQ(placements.size(), static_cast<std::size_t>(processors));
     std::set<int> cpus;
     for (const cpu_set_t& placement : placements) {
         ASSERT_EQ(CPU_COUNT(&placement), 1) << "a thread of for_each_tile may move between processors";
@@ -84,14 +94,17 @@ TEST(Tiles, EachThreadRunsOnAProcessorOfItsOwnAndTheCallerGetsItsOwnBack) {
                 cpus.insert(cpu);
             }
     }
-    EXPECT_EQ(cpus.size(), 2u) << "both threads pinned to one processor";
+    EXPECT_EQ(cpus.size(), static_cast<std::size_t>(processors)) << "two threads pinned to one processor";
     const cpu_set_t after = own_processors();
     EXPECT_TRUE(CPU_EQUAL(&before, &after)) << "the calling thread kept the one processor it was pinned to";
 }
 
 TEST(Tiles, TheCallerGetsItsProcessorsBackWhenATileThrows) {
+    // (With as many threads as processors, so that the caller was moved.)
     const cpu_set_t before = own_processors();
-    EXPECT_THROW(for_each_tile(64, 64, 2, [](int) -> TileFunction { return [](const Tile&) { throw std::runtime_error("stop"); }; }),
+    const int threads = CPU_COUNT(&before);
+    EXPECT_THROW(for_each_tile(16 * threads, 16, threads,
+                               [](int) -> TileFunction { return [](const Tile&) { throw std::runtime_error("stop"); }; }),
                  std::runtime_error);
     const cpu_set_t after = own_processors();
     EXPECT_TRUE(CPU_EQUAL(&before, &after));

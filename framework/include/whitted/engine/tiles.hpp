@@ -22,6 +22,9 @@ using TileFunction = std::function<void(const Tile& tile)>;
 /// once in each thread, with its index, and returns what that thread does with
 /// each tile. The first exception thrown in any thread stops the others after
 /// their current tile and is rethrown here. Returns the number of threads used.
+/// When the threads are exactly as many as the processors the caller may use,
+/// each runs pinned to one of them (the caller gets its own set back afterwards),
+/// so threads that `for_thread` or a tile starts, and nested calls, share that one.
 int for_each_tile(int width, int height, int threads, const std::function<TileFunction(int thread_index)>& for_thread);
 
 /// The number of tiles of a width x height image.
