@@ -179,7 +179,11 @@ Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const 
 bool Tracer::occluded(const Ray& ray, double distance) const {
     Engine& e = *engine_;
     if (e.collecting_feelers) { // trace_pixels() looking ahead: which feelers will this hit send?
-        e.collecting_feelers->push_back(Engine::Feeler{ray, distance});
+        // Filled in place: a Feeler built aside and copied is read back in 16-byte
+        // pieces from the narrower stores that wrote it, and the read waits.
+        Engine::Feeler& feeler = e.collecting_feelers->emplace_back();
+        feeler.ray = ray;
+        feeler.distance = distance;
         return false;
     }
     if (e.tree) [[unlikely]]
