@@ -55,7 +55,6 @@ std::vector<int> pixel_visits(int width, int height, int threads) {
     return counts;
 }
 
-
 } // namespace
 
 TEST(Tiles, EveryPixelOnceWhateverTheThreadCount) {
