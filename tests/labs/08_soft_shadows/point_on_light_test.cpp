@@ -44,7 +44,8 @@ TEST(PointOnLight, EveryPointLiesOnTheLightsPlaneAndInsideIt) {
     for (double u : {0.0, 0.13, 0.5, 0.77, 0.999}) {
         for (double v : {0.0, 0.31, 0.62, 0.999}) {
             const Vec3 offset = point_on_light(light, Vec2(u, v)) - light.center;
-            const std::string where = "(" + std::to_string(u) + ", " + std::to_string(v) + ")";
+            std::string where = "(";
+            where.append(std::to_string(u)).append(", ").append(std::to_string(v)).append(")");
             EXPECT_NEAR(glm::dot(offset, normal), 0.0, 1e-12) << where << " is off the light's plane";
             // edge_u and edge_v are at right angles here: the coordinates are projections.
             EXPECT_NEAR(glm::dot(offset, light.edge_u) / glm::dot(light.edge_u, light.edge_u), u - 0.5, 1e-12) << where;
