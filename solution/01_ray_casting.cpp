@@ -17,7 +17,7 @@ Ray primary_ray(const Camera& camera, double x, double y) {
 // The distances alone (declared in whitted/engine/hit_distances.hpp): the reference
 // renderer's fast queries call these same functions, so they agree bit for bit.
 
-std::optional<double> sphere_distance(const Ray& ray, const Sphere& sphere, Interval t_range) {
+Distance sphere_distance(const Ray& ray, const Sphere& sphere, Interval t_range) {
     // |o + t d - c|^2 = r^2 with |d| = 1:  t^2 + 2 b t + c = 0, b = (o - c) . d, c = |o - c|^2 - r^2.
     const Vec3 oc = ray.origin - sphere.center;
     const double b = glm::dot(oc, ray.direction);
@@ -36,7 +36,7 @@ std::optional<double> sphere_distance(const Ray& ray, const Sphere& sphere, Inte
     return std::nullopt;
 }
 
-std::optional<double> plane_distance(const Ray& ray, const Plane& plane, Interval t_range) {
+Distance plane_distance(const Ray& ray, const Plane& plane, Interval t_range) {
     // n . (o + t d - p) = 0  =>  t = n . (p - o) / (n . d)
     const double denominator = glm::dot(plane.normal, ray.direction);
     if (denominator == 0.0) return std::nullopt; // parallel
@@ -83,13 +83,13 @@ Hit triangle_hit(const Ray& ray, const Triangle& triangle, const TriangleDistanc
 }
 
 std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere, Interval t_range) {
-    const std::optional<double> t = sphere_distance(ray, sphere, t_range);
+    const Distance t = sphere_distance(ray, sphere, t_range);
     if (!t) return std::nullopt;
     return sphere_hit(ray, sphere, *t);
 }
 
 std::optional<Hit> intersect_plane(const Ray& ray, const Plane& plane, Interval t_range) {
-    const std::optional<double> t = plane_distance(ray, plane, t_range);
+    const Distance t = plane_distance(ray, plane, t_range);
     if (!t) return std::nullopt;
     return plane_hit(ray, plane, *t);
 }

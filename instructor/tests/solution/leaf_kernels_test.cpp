@@ -2,6 +2,7 @@
 // kernels) must answer exactly as the labs' code testing every primitive does,
 // and render the very same image, bit for bit.
 #include "whitted/labs.hpp"
+#include "whitted/engine/hit_distances.hpp"
 #include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/engine/ray_packet.hpp"
 #include "whitted/render.hpp"
@@ -9,8 +10,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <ostream>
 #include <random>
 #include <string>
@@ -121,6 +125,27 @@ INSTANTIATE_TEST_SUITE_P(Scales, FastPath,
                                                               Setting{"huge", Vec3(0.0), 1e9}),
                                             ::testing::Values(Layout::mixed, Layout::spheres, Layout::triangles)),
                          [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + name(std::get<1>(info.param)); });
+
+// A Distance says what the std::optional<double> it stands in for would say:
+// none, or a distance, any finite one (0, -0, negative, huge) included.
+TEST(FastPath, ADistanceSaysWhatAnOptionalDoubleSays) {
+    const Distance none = std::nullopt;
+    EXPECT_FALSE(none);
+    EXPECT_EQ(none.value_or(7.0), 7.0);
+    for (const double t : {0.0, -0.0, -3.5, 2.25, 1e300, -std::numeric_limits<double>::infinity()}) {
+        const Distance found = t;
+        ASSERT_TRUE(found) << t;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(*found), std::bit_cast<std::uint64_t>(t));
+        EXPECT_EQ(found.value_or(7.0), t);
+    }
+    // A unit sphere 5 ahead: met at t = 4 (its near side); a ray beside it misses.
+    const Sphere sphere{Point3(0.0, 0.0, -5.0), 1.0};
+    const Interval ahead{0.0, kInfinity};
+    const Distance hit = sphere_distance(Ray{Point3(0.0), Vec3(0.0, 0.0, -1.0)}, sphere, ahead);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(*hit, 4.0);
+    EXPECT_FALSE(sphere_distance(Ray{Point3(2.0, 0.0, 0.0), Vec3(0.0, 0.0, -1.0)}, sphere, ahead));
+}
 
 TEST(FastPath, EqualDistancesGoToTheFirstPrimitiveAsInTheLabs) {
     // Copies of one triangle and of one sphere, side by side in one leaf: every

@@ -15,6 +15,7 @@
 #include "whitted/ray.hpp"
 #include "whitted/shapes.hpp"
 
+#include <limits>
 #include <optional>
 
 namespace whitted {
@@ -27,11 +28,34 @@ struct TriangleDistance {
     double b2 = 0.0;
 };
 
+/// A distance along a ray, or none: what std::optional<double> says, held in one
+/// double (none is +infinity, which no open range of t holds).
+///
+/// Why not std::optional<double>: g++ returns one from a function that is not
+/// inlined through the stack, storing its flag as a byte and reading it back as
+/// eight, and the processor waits for that store at every return (sphere_distance
+/// is called for every candidate sphere). One double comes back in a register.
+class Distance {
+  public:
+    constexpr Distance(std::nullopt_t) {}
+    constexpr Distance(double t) : t_(t) {}
+    /// True when there is a distance.
+    constexpr explicit operator bool() const { return t_ != kNone; }
+    /// The distance (only when there is one).
+    constexpr double operator*() const { return t_; }
+    /// The distance, or `none` when there is none.
+    constexpr double value_or(double none) const { return t_ != kNone ? t_ : none; }
+
+  private:
+    static constexpr double kNone = std::numeric_limits<double>::infinity();
+    double t_ = kNone;
+};
+
 /// The distance t of the ray's hit with the sphere inside t_range (the nearer root first), if any.
-std::optional<double> sphere_distance(const Ray& ray, const Sphere& sphere, Interval t_range);
+Distance sphere_distance(const Ray& ray, const Sphere& sphere, Interval t_range);
 
 /// The distance t of the ray's hit with the plane inside t_range, if any (none when the ray is parallel).
-std::optional<double> plane_distance(const Ray& ray, const Plane& plane, Interval t_range);
+Distance plane_distance(const Ray& ray, const Plane& plane, Interval t_range);
 
 /// The distance and barycentric coordinates of the ray's hit with the triangle inside t_range, if any.
 std::optional<TriangleDistance> triangle_distance(const Ray& ray, const Triangle& triangle, Interval t_range);
