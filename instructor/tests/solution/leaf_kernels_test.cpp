@@ -127,11 +127,12 @@ INSTANTIATE_TEST_SUITE_P(Scales, FastPath,
                          [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + name(std::get<1>(info.param)); });
 
 // A Distance says what the std::optional<double> it stands in for would say:
-// none, or a distance, any finite one (0, -0, negative, huge) included.
+// none, or a distance, any but +infinity (0, -0, negative, huge, -infinity).
 TEST(FastPath, ADistanceSaysWhatAnOptionalDoubleSays) {
     const Distance none = std::nullopt;
     EXPECT_FALSE(none);
     EXPECT_EQ(none.value_or(7.0), 7.0);
+    EXPECT_FALSE(Distance{});
     for (const double t : {0.0, -0.0, -3.5, 2.25, 1e300, -std::numeric_limits<double>::infinity()}) {
         const Distance found = t;
         ASSERT_TRUE(found) << t;
