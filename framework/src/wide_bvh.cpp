@@ -31,23 +31,26 @@ struct Collapser {
     std::uint32_t left(std::uint32_t b) const { return b + 1; }
     std::uint32_t right(std::uint32_t b) const { return binary[b].first; }
     bool is_leaf(std::uint32_t b) const { return binary[b].count > 0; }
+    // The half surface area of inner node b, as the choice of which node to open weighs it; -1 for a leaf.
+    double surface(std::uint32_t b) const { return is_leaf(b) ? -1.0 : binary[b].bounds.half_area(); }
 
     // Makes the wide node for binary inner node b and returns its index.
     std::uint32_t collapse(std::uint32_t b) {
         std::uint32_t children[WideBvh::kWidth] = {left(b), right(b)};
+        // Each child's surface, or -1 for a leaf (never opened): found once per child.
+        double areas[WideBvh::kWidth] = {surface(children[0]), surface(children[1])};
         int count = 2;
         // Open the inner child with the largest surface until there are eight.
         while (count < WideBvh::kWidth) {
             int largest = -1;
-            for (int i = 0; i < count; ++i) {
-                if (is_leaf(children[i])) continue;
-                if (largest < 0 || binary[children[i]].bounds.half_area() > binary[children[largest]].bounds.half_area())
-                    largest = i;
-            }
+            for (int i = 0; i < count; ++i)
+                if (areas[i] >= 0.0 && (largest < 0 || areas[i] > areas[largest])) largest = i;
             if (largest < 0) break;
             const std::uint32_t opened = children[largest];
             children[largest] = left(opened);
-            children[count++] = right(opened);
+            areas[largest] = surface(children[largest]);
+            children[count] = right(opened);
+            areas[count++] = surface(right(opened));
         }
         const auto index = static_cast<std::uint32_t>(nodes.size());
         nodes.emplace_back();
