@@ -102,18 +102,21 @@ TokenStream::TokenStream(std::string_view text, std::string_view file_name, std:
 }
 
 const Token& TokenStream::peek() {
-    if (!peeked_) peeked_ = scan();
-    return *peeked_;
+    if (!has_peeked_) {
+        scan();
+        has_peeked_ = true;
+    }
+    return peeked_;
 }
 
 Token TokenStream::next() {
-    const Token token = peek();
-    peeked_.reset();
+    peek();
+    has_peeked_ = false;
     ++taken_;
-    return token;
+    return peeked_;
 }
 
-Token TokenStream::scan() {
+void TokenStream::scan() {
     // Skip blanks and comments, counting lines as we go; a column is its byte's distance from the line's start.
     const std::size_t size = text_.size();
     while (pos_ < size) {
@@ -130,16 +133,20 @@ Token TokenStream::scan() {
             break;
         }
     }
-    if (pos_ == size) return last_end_;
-    Token token{{}, line_, static_cast<int>(pos_ - line_start_) + 1};
+    if (pos_ == size) {
+        peeked_ = last_end_;
+        return;
+    }
+    peeked_.line = line_;
+    peeked_.column = static_cast<int>(pos_ - line_start_) + 1;
     const std::size_t start = pos_;
     while (pos_ < size && kind_of(text_[pos_]) == ByteKind::word) ++pos_;
-    token.text = text_.substr(start, pos_ - start);
-    if (token.text.size() > max_token_length_)
-        fail(token, "expected a word or number of at most " + std::to_string(max_token_length_) +
-                        " characters, found one of " + std::to_string(token.text.size()) + " (is this a scene file?)");
-    last_end_ = Token{{}, line_, static_cast<int>(pos_ - line_start_) + 1};
-    return token;
+    peeked_.text = text_.substr(start, pos_ - start);
+    if (peeked_.text.size() > max_token_length_)
+        fail(peeked_, "expected a word or number of at most " + std::to_string(max_token_length_) +
+                          " characters, found one of " + std::to_string(peeked_.text.size()) + " (is this a scene file?)");
+    last_end_.line = line_;
+    last_end_.column = static_cast<int>(pos_ - line_start_) + 1;
 }
 
 std::string TokenStream::where(const Token& token) const {
@@ -153,7 +160,7 @@ void TokenStream::fail(const Token& token, const std::string& message) const {
 NumberReader::NumberReader(TokenStream& tokens, std::string entity, long long count)
     : tokens_(tokens), entity_(std::move(entity)), remaining_(count) {}
 
-Token NumberReader::take(std::string_view what) {
+const Token& NumberReader::take(std::string_view what) {
     const Token& token = tokens_.peek();
     if (token.is_end())
         tokens_.fail(token, "expected " + numbers_phrase(remaining_) + " for " + entity_ + ", found end of file");
@@ -165,7 +172,7 @@ Token NumberReader::take(std::string_view what) {
 }
 
 double NumberReader::number(std::string_view what) {
-    const Token token = take(what);
+    const Token& token = take(what);
     double value = 0.0;
     switch (parse_double(token.text, value)) {
     case Parsed::ok:
@@ -207,7 +214,7 @@ Color NumberReader::color(std::string_view what) {
 }
 
 long long NumberReader::integer(std::string_view what, long long min, long long max) {
-    const Token token = take(what);
+    const Token& token = take(what);
     const std::string_view text = without_plus(token.text);
     long long value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);

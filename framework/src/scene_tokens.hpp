@@ -8,7 +8,6 @@
 
 #include "whitted/math.hpp"
 
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -66,7 +65,9 @@ class TokenStream {
     [[noreturn]] void fail(const Token& token, const std::string& message) const;
 
   private:
-    Token scan();
+    // Reads the token after the last one into peeked_ (in place: a token returned
+    // and then copied is read back in wider pieces than it was written, which waits).
+    void scan();
 
     std::string_view text_;
     std::string file_name_;
@@ -76,7 +77,8 @@ class TokenStream {
     std::size_t line_start_ = 0; // where line_ starts in text_
     std::size_t taken_ = 0;
     Token last_end_;              // where the end of the file is reported: just after the last token
-    std::optional<Token> peeked_;
+    Token peeked_;                // the next token, when has_peeked_
+    bool has_peeked_ = false;
 };
 
 /// Reads the numbers that follow one keyword, so that a short entity reports
@@ -111,7 +113,8 @@ class NumberReader {
     const Token& last() const { return last_; }
 
   private:
-    Token take(std::string_view what);
+    // Takes the next token, which must look like a number, into last_ and returns it.
+    const Token& take(std::string_view what);
 
     TokenStream& tokens_;
     std::string entity_;
