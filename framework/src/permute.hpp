@@ -23,7 +23,8 @@
 
 namespace whitted::detail {
 
-/// Rearranges `items` so that items[k] becomes what items[from[k]] was (`from` is a permutation of its indices).
+/// Rearranges `items` so that items[k] becomes what items[from[k]] was (`from` is a permutation of its
+/// indices); throws std::length_error for more than 2^31 - 1 items.
 template <class T>
 void permute_in_place(std::span<T> items, std::span<const std::uint32_t> from) {
     constexpr std::uint32_t kCycleStart = 0x80000000u; // marks a position that starts a cycle
