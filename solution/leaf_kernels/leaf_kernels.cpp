@@ -10,6 +10,7 @@
 // student handout ships framework/ but not solution/.
 #include "whitted/engine/leaf_kernels.hpp"
 #include "whitted/engine/hit_distances.hpp"
+#include "whitted/engine/result_in_place.hpp"
 
 #include "screens.hpp"
 #include "whitted/scene.hpp"
@@ -18,6 +19,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <new>
+#include <type_traits>
 
 namespace whitted {
 namespace {
@@ -60,13 +63,18 @@ inline double distance(const Ray& ray, const Primitive& primitive, Interval t_ra
 // (`on_triangle` where a triangle was met), without testing it again.
 std::optional<Hit> hit_at(const Ray& ray, const Primitive& primitive, double t, const TriangleDistance& on_triangle, Interval t_range) {
     const Shape& shape = primitive.shape;
-    Hit hit;
-    if (const auto* sphere = std::get_if<Sphere>(&shape)) hit = sphere_hit(ray, *sphere, t);
-    else if (const auto* triangle = std::get_if<Triangle>(&shape)) hit = triangle_hit(ray, *triangle, on_triangle);
-    else if (const auto* plane = std::get_if<Plane>(&shape)) hit = plane_hit(ray, *plane, t);
-    else return intersect(ray, primitive, t_range); // boxes and cones: the framework's own test, once more
-    hit.primitive = primitive.index;
-    hit.material = primitive.material;
+    // Built in place (result_in_place.hpp), and returned as the one named result, so
+    // the lab's Hit is written once, into the caller's optional.
+    std::optional<Hit> hit;
+    if (const auto* sphere = std::get_if<Sphere>(&shape)) hit.emplace(ResultOf{[&] { return sphere_hit(ray, *sphere, t); }});
+    else if (const auto* triangle = std::get_if<Triangle>(&shape))
+        hit.emplace(ResultOf{[&] { return triangle_hit(ray, *triangle, on_triangle); }});
+    else if (const auto* plane = std::get_if<Plane>(&shape)) hit.emplace(ResultOf{[&] { return plane_hit(ray, *plane, t); }});
+    else hit = intersect(ray, primitive, t_range); // boxes and cones: the framework's own test, once more
+    if (hit) {
+        hit->primitive = primitive.index;
+        hit->material = primitive.material;
+    }
     return hit;
 }
 
@@ -256,7 +264,11 @@ void closest_packet(const SceneView& scene, std::span<const Ray> rays, std::span
         }
         if (shrunk) packet.refresh_t_max();
     });
-    for (std::size_t r = 0; r < rays.size(); ++r) hits[r] = nearest_hit(scene, rays[r], nearest[r], t_ranges[r]);
+    // Each hit made in its place: built aside and assigned, it would be read back
+    // in 16-byte pieces from the narrower stores that wrote it, and wait.
+    static_assert(std::is_trivially_destructible_v<std::optional<Hit>>);
+    for (std::size_t r = 0; r < rays.size(); ++r)
+        ::new (&hits[r]) std::optional<Hit>(nearest_hit(scene, rays[r], nearest[r], t_ranges[r]));
 }
 
 // occluded() for a packet of rays: the former blocker and the planes for each
