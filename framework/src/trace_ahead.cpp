@@ -151,7 +151,7 @@ void Tracer::trace_pixels(std::span<const Vec2> positions, std::span<Color> colo
         ahead.feelers.clear();
         ahead.local_if_lit.reset();
         if (!ahead.hit || e.settings.stage < stage_number(Stage::shadows)) continue;
-        begin_pixel(sample_at(positions[i].x, positions[i].y)); // the lights of this pixel's sample
+        e.begin_pixel(pixel_at(positions[i].x), pixel_at(positions[i].y), 0); // the lights of this pixel's sample
         const auto [local, lights] = shade_as_if_lit(*this, e, *ahead.hit, -ahead.eye.direction, ahead.feelers);
         ahead.local_if_lit = local;
         light_count = std::max(light_count, lights);
@@ -160,7 +160,7 @@ void Tracer::trace_pixels(std::span<const Vec2> positions, std::span<Color> colo
     // Each pixel as trace_pixel() traces it, its queries answered from above.
     for (std::size_t i = 0; i < count; ++i) {
         const PointingWhileAlive answering(e.ahead, &std::as_const(s.block[i]));
-        colors[i] = trace_pixel(positions[i].x, positions[i].y);
+        ::new (&colors[i]) Color(trace_pixel(positions[i].x, positions[i].y)); // written in place, as the rays above
     }
 }
 

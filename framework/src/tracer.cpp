@@ -148,31 +148,28 @@ Color Tracer::Engine::local_colour(const Tracer& tracer, const Hit& hit, const V
     return settings.stage >= stage_number(Stage::blinn_phong) ? blinn_phong(tracer, hit, wo) : lambert(tracer, hit);
 }
 
-void Tracer::begin_pixel(const PixelSample& sample) const {
-    Engine& e = *engine_;
-    e.sample = sample;
-    e.path_weight = Color(1.0);
-    e.pixel_rays = 0;
-    e.pixel_cut_short = false;
-}
+void Tracer::begin_pixel(const PixelSample& sample) const { engine_->begin_pixel(sample.x, sample.y, sample.index); }
 
-Color Tracer::trace_pixel(double x, double y) const { return trace_sample(sample_at(x, y), x, y); }
+Color Tracer::trace_pixel(double x, double y) const { return engine_->trace_sample(*this, pixel_at(x), pixel_at(y), 0, x, y); }
 
 Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const {
-    Engine& e = *engine_;
-    begin_pixel(sample);
-    if (e.tree) e.tree->clear();
-    e.current_node = -1;
+    return engine_->trace_sample(*this, sample.x, sample.y, sample.index, x, y);
+}
+
+Color Tracer::Engine::trace_sample(const Tracer& tracer, int px, int py, int index, double x, double y) {
+    begin_pixel(px, py, index);
+    if (tree) tree->clear();
+    current_node = -1;
     // The eye ray: through the pinhole, or from the sample's point of the thin lens
     // (lab 9) when the camera has an aperture; a pinhole camera's picture never changes.
-    const Camera& camera = e.scene.camera();
-    const bool lens = camera.aperture > 0.0 && e.settings.stage >= stage_number(Stage::depth_of_field);
+    const Camera& camera = scene.camera();
+    const bool lens = camera.aperture > 0.0 && settings.stage >= stage_number(Stage::depth_of_field);
     // (trace_pixels() made this very pinhole ray already, from the same x and y.)
-    const Ray eye_ray = lens     ? thin_lens_ray(camera, x, y, sample_numbers(sample, SampleUse::lens))
-                        : e.ahead ? e.ahead->eye
-                                  : primary_ray(camera, x, y);
-    const Color color = trace(eye_ray, 1, RayKind::eye, Color(1.0));
-    if (e.pixel_cut_short) ++e.stats.pixels_cut_short;
+    const Ray eye_ray = lens    ? thin_lens_ray(camera, x, y, sample_numbers(sample, SampleUse::lens))
+                        : ahead ? ahead->eye
+                                : primary_ray(camera, x, y);
+    const Color color = tracer.trace(eye_ray, 1, RayKind::eye, Color(1.0));
+    if (pixel_cut_short) ++stats.pixels_cut_short;
     return color;
 }
 
@@ -180,9 +177,12 @@ bool Tracer::occluded(const Ray& ray, double distance) const {
     Engine& e = *engine_;
     if (e.collecting_feelers) { // trace_pixels() looking ahead: which feelers will this hit send?
         // Filled in place: a Feeler built aside and copied is read back in 16-byte
-        // pieces from the narrower stores that wrote it, and the read waits.
+        // pieces from the narrower stores that wrote it, and the read waits. The
+        // ray, just made by the lab, goes a vector at a time for the same reason
+        // (a vector is written as 16 + 8 bytes, and a whole Ray read as 3 x 16).
         Engine::Feeler& feeler = e.collecting_feelers->emplace_back();
-        feeler.ray = ray;
+        feeler.ray.origin = ray.origin;
+        feeler.ray.direction = ray.direction;
         feeler.distance = distance;
         return false;
     }

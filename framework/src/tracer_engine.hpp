@@ -97,6 +97,17 @@ struct Tracer::Engine {
     /// it: counted as the shadow feelers it sends, as if it ran again.
     std::optional<Color> local_ahead(const Ray& ray, int depth);
 
+    /// Tracer::begin_pixel() and trace_sample(), with the sample as three ints:
+    /// g++ builds a PixelSample it hands on in memory, with 4-byte stores, and
+    /// reads it back 8 bytes at a time before they land (a stall, once a pixel).
+    void begin_pixel(int x, int y, int index) {
+        sample = PixelSample{x, y, index};
+        path_weight = Color(1.0);
+        pixel_rays = 0;
+        pixel_cut_short = false;
+    }
+    Color trace_sample(const Tracer& tracer, int px, int py, int index, double x, double y);
+
     Color shade(const Tracer& tracer, const Ray& ray, int depth);
     /// The labs' local colour of `hit` seen along wo: Lambert with shadows (lab 2) or Blinn-Phong (lab 3).
     Color local_colour(const Tracer& tracer, const Hit& hit, const Vec3& wo) const;
@@ -120,11 +131,14 @@ inline bool same_bits(const Ray& a, const Ray& b) {
     return same;
 }
 
-/// The sample trace_pixel() traces for viewport position (x, y): sample 0 of
-/// the pixel that contains it (pixel 0 for a position no pixel has).
-inline PixelSample sample_at(double x, double y) {
-    const auto pixel = [](double v) { return v > -1e9 && v < 1e9 ? static_cast<int>(std::floor(v)) : 0; };
-    return PixelSample{pixel(x), pixel(y), 0};
+/// The pixel that contains viewport coordinate v, along one axis: sample 0 of
+/// that pixel is what trace_pixel() traces (pixel 0 for a coordinate no pixel has).
+/// (std::floor without SSE4.1 is a long chain of conversions, on every pixel:
+/// this truncates, then steps down where that went up.)
+inline int pixel_at(double v) {
+    if (!(v > -1e9 && v < 1e9)) return 0;
+    const int truncated = static_cast<int>(v); // towards zero
+    return v < truncated ? truncated - 1 : truncated;
 }
 
 } // namespace whitted
