@@ -159,6 +159,11 @@ void Tracer::trace_pixels(std::span<const Vec2> positions, std::span<Color> colo
     find_blockers(e, light_count);
     // Each pixel as trace_pixel() traces it, its queries answered from above.
     for (std::size_t i = 0; i < count; ++i) {
+        if (!s.block[i].hit) { // it met nothing: no query of its recursion to answer
+            e.begin_pixel(pixel_at(positions[i].x), pixel_at(positions[i].y), 0);
+            ::new (&colors[i]) Color(e.escaped_eye_ray(s.block[i].eye));
+            continue;
+        }
         const PointingWhileAlive answering(e.ahead, &std::as_const(s.block[i]));
         ::new (&colors[i]) Color(trace_pixel(positions[i].x, positions[i].y)); // written in place, as the rays above
     }

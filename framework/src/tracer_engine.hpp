@@ -107,6 +107,7 @@ struct Tracer::Engine {
         pixel_cut_short = false;
     }
     Color trace_sample(const Tracer& tracer, int px, int py, int index, double x, double y);
+    Color escaped_eye_ray(const Ray& eye);
 
     Color shade(const Tracer& tracer, const Ray& ray, int depth);
     /// The labs' local colour of `hit` seen along wo: Lambert with shadows (lab 2) or Blinn-Phong (lab 3).
