@@ -11,7 +11,9 @@
 // only when it is the very same query, bit for bit: the same eye ray, the same
 // feeler, or the same hit's local colour when none of its feelers turned out
 // blocked (the shading then gets the very answers it got ahead). A guess that
-// turns out wrong costs time, never a different image.
+// turns out wrong costs time, never a different image. A pixel whose eye ray
+// met nothing is not traced: it gets what trace_pixel() would give it, the
+// colour escaping rays see, counted as one ray (Engine::escaped_eye_ray()).
 //
 // Only the eye rays and their feelers: the secondary rays of neighbouring
 // pixels part ways, and looking ahead for them (measured with reflections,
@@ -157,7 +159,8 @@ void Tracer::trace_pixels(std::span<const Vec2> positions, std::span<Color> colo
         light_count = std::max(light_count, lights);
     }
     find_blockers(e, light_count);
-    // Each pixel as trace_pixel() traces it, its queries answered from above.
+    // Each pixel as trace_pixel() traces it, its queries answered from above
+    // (or, where its eye ray met nothing, with what that trace would give).
     for (std::size_t i = 0; i < count; ++i) {
         if (!s.block[i].hit) { // it met nothing: no query of its recursion to answer
             e.begin_pixel(pixel_at(positions[i].x), pixel_at(positions[i].y), 0);

@@ -91,6 +91,7 @@ Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight
     if (e.too_weak(kind, path_weight) || !e.within_budget()) return Color(0.0);
     e.stats.count(kind);
     e.path_weight = path_weight;
+    // (Engine::escaped_eye_ray() repeats these steps for an eye ray known to meet nothing.)
     const Color color = e.shade(*this, ray, depth);
     e.path_weight = parent_weight;
     return weight * color;
@@ -123,7 +124,7 @@ Color Tracer::Engine::shade(const Tracer& tracer, const Ray& ray, int depth) {
     const std::optional<Hit> hit = closest_hit(ray, depth);
     if (tree) [[unlikely]]
         tree->nodes[current_node].hit = hit;
-    if (!hit) return scene.background(ray.direction);
+    if (!hit) return scene.background(ray.direction); // as escaped_eye_ray() for a pixel's escaping eye ray
     const Material& material = scene.material(*hit);
     const Vec3 wo = -ray.direction;
     const auto reached = [stage = settings.stage](Stage feature) { return stage >= stage_number(feature); };
@@ -194,6 +195,7 @@ bool Tracer::occluded(const Ray& ray, double distance) const {
         // ray, just made by the lab, goes a vector at a time for the same reason
         // (a vector is written as 16 + 8 bytes, and a whole Ray read as 3 x 16).
         Engine::Feeler& feeler = e.collecting_feelers->emplace_back();
+        static_assert(sizeof(Ray) == 2 * sizeof(Vec3), "a field added to Ray must be copied here too");
         feeler.ray.origin = ray.origin;
         feeler.ray.direction = ray.direction;
         feeler.distance = distance;

@@ -1,4 +1,5 @@
-// What a tracer holds (private to tracer.cpp and trace_ahead.cpp).
+// What a tracer holds (private to tracer.cpp and trace_ahead.cpp; the framework's
+// own tests include it too).
 #pragma once
 
 #include "whitted/tracer.hpp"

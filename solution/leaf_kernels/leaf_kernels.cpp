@@ -64,7 +64,8 @@ inline double distance(const Ray& ray, const Primitive& primitive, Interval t_ra
 std::optional<Hit> hit_at(const Ray& ray, const Primitive& primitive, double t, const TriangleDistance& on_triangle, Interval t_range) {
     const Shape& shape = primitive.shape;
     // Built in place (result_in_place.hpp), and returned as the one named result, so
-    // the lab's Hit is written once, into the caller's optional.
+    // that (g++ eliding the return) a sphere's, triangle's or plane's Hit is written
+    // once, into the caller's optional; boxes and cones, rare, are built aside.
     std::optional<Hit> hit;
     if (const auto* sphere = std::get_if<Sphere>(&shape)) hit.emplace(ResultOf{[&] { return sphere_hit(ray, *sphere, t); }});
     else if (const auto* triangle = std::get_if<Triangle>(&shape))

@@ -657,3 +657,55 @@ TEST(FastPath, BlocksOfPixelsWithAreaLightsRenderWhatPixelsAloneRender) {
     EXPECT_EQ(blocks.stats.shadow, alone.stats.shadow);
     EXPECT_GT(blocks.stats.shadow, 1000u);
 }
+
+TEST(FastPath, PixelsWhoseEyeRaysEscapeLeaveTheTracerAsPixelsAloneDo) {
+    // trace_pixels() gives a pixel whose eye ray meets nothing its colour without
+    // tracing the ray again (Tracer::Engine::escaped_eye_ray). Block by block,
+    // each colour, the counts and what the tracer holds afterwards (state(),
+    // pixel_sample()) must be what trace_pixel() leaves, pixel by pixel, in a
+    // twin tracer: with the background colour (the classic scene's sky) and with
+    // a skybox (course_features has one), and budgets of 0, 1 and 10,000 rays a pixel.
+    const auto same_bits = [](const Color& a, const Color& b) { return std::memcmp(&a, &b, sizeof(Color)) == 0; };
+    for (const char* name : {"whitted_1980.p3f", "course_features.p3f"}) {
+        LoadedScene loaded = load_scene(std::string(WHITTED_SOURCE_DIR "/scenes/") + name);
+        add_small_spheres(loaded.data, 7, 200);
+        loaded.data.camera = loaded.data.camera.with_resolution(24, 16);
+        const Scene scene(loaded.data, linked_leaf_kernels());
+        ASSERT_TRUE(scene.queries_packets()) << name;
+        for (const std::uint32_t budget : {0u, 1u, 10000u}) {
+            const std::string where = std::string(name) + " budget " + std::to_string(budget);
+            const RenderSettings settings = block_settings(Stage::bvh, budget);
+            RayStats block_stats, alone_stats;
+            const Tracer blocks(scene, settings, block_stats), alone(scene, settings, alone_stats);
+            int escaped = 0, met = 0;
+            for (int y0 = 0; y0 < 16; y0 += 4) {
+                for (int x0 = 0; x0 < 24; x0 += 4) {
+                    Vec2 positions[16];
+                    Color colors[16];
+                    for (int k = 0; k < 16; ++k) positions[k] = Vec2(x0 + k % 4 + 0.5, y0 + k / 4 + 0.5);
+                    blocks.trace_pixels(positions, colors);
+                    for (int k = 0; k < 16; ++k) {
+                        EXPECT_TRUE(same_bits(colors[k], alone.trace_pixel(positions[k].x, positions[k].y))) << where << " pixel " << k;
+                        const bool escapes = !scene.closest_hit(primary_ray(scene.camera(), positions[k].x, positions[k].y));
+                        escaped += escapes;
+                        met += !escapes;
+                    }
+                    const TracerState a = blocks.state(), b = alone.state();
+                    EXPECT_EQ(a.stats.eye, b.stats.eye) << where;
+                    EXPECT_EQ(a.stats.total(), b.stats.total()) << where;
+                    EXPECT_EQ(a.stats.pixels_cut_short, b.stats.pixels_cut_short) << where;
+                    EXPECT_TRUE(same_bits(a.path_weight, b.path_weight)) << where;
+                    EXPECT_EQ(a.pixel_rays, b.pixel_rays) << where;
+                    EXPECT_EQ(a.pixel_cut_short, b.pixel_cut_short) << where;
+                    EXPECT_EQ(a.sample, b.sample) << where;
+                    EXPECT_EQ(blocks.pixel_sample(), alone.pixel_sample()) << where;
+                }
+            }
+            EXPECT_GT(escaped, 40) << where; // both kinds of pixel, in blocks that mix them
+            EXPECT_GT(met, 40) << where;
+            if (budget == 0) {
+                EXPECT_EQ(block_stats.pixels_cut_short, 24u * 16u) << where;
+            }
+        }
+    }
+}
