@@ -14,6 +14,8 @@
 // items, asking for each one from memory a few moves before it is needed.
 #pragma once
 
+#include "prefetch.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -47,14 +49,10 @@ void permute_in_place(std::span<T> items, std::span<const std::uint32_t> from) {
     }
     constexpr std::size_t kAhead = 16; // moves between asking for an item and moving it
     const auto ask = [&](std::size_t j) {
-#if defined(__GNUC__) || defined(__clang__)
         if (j >= visits.size()) return;
         const char* item = reinterpret_cast<const char*>(&items[visits[j] & kPosition]);
-        __builtin_prefetch(item);
-        __builtin_prefetch(item + sizeof(T) - 1); // an item may straddle two cache lines
-#else
-        (void)j;
-#endif
+        prefetch(item);
+        prefetch(item + sizeof(T) - 1); // an item may straddle two cache lines
     };
     for (std::size_t j = 0; j < kAhead; ++j) ask(j);
     std::size_t j = 0;

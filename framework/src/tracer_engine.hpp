@@ -5,7 +5,6 @@
 #include "whitted/tracer.hpp"
 
 #include <bit>
-#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>

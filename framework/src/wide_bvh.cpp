@@ -1,6 +1,8 @@
 // Collapsing the binary SAH tree into eight-wide nodes with float boxes.
 #include "whitted/engine/wide_bvh.hpp"
 
+#include "prefetch.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,9 +38,7 @@ struct Collapser {
     // tree it lies far from its parent, and each wait for it stalls the collapse).
     double surface(std::uint32_t b) const {
         if (is_leaf(b)) return -1.0;
-#if defined(__GNUC__) || defined(__clang__)
-        __builtin_prefetch(&binary[right(b)]);
-#endif
+        detail::prefetch(&binary[right(b)]);
         return binary[b].bounds.half_area();
     }
 
