@@ -1,5 +1,7 @@
 #include "whitted/bvh_tree.hpp"
 
+#include "clip_to_box.hpp"
+
 #include "whitted/engine/bvh.hpp"
 #include "whitted/labs.hpp"
 
@@ -85,8 +87,12 @@ double sah_cost(const BvhTree& tree, double node_cost) {
     return cost;
 }
 
-TreeQueryCost closest_hit_cost(const BvhTree& tree, std::span<const Primitive> primitives, const Ray& ray,
-                               Interval t_range) {
+namespace {
+
+/// The framework's walk of `tree`, nearer child first, counting its tests; with
+/// `any_hit` it stops at the first hit (occlusion), else it shrinks the range to each hit.
+TreeQueryCost walk_cost(const BvhTree& tree, std::span<const Primitive> primitives, const Ray& ray, Interval t_range,
+                        bool any_hit) {
     TreeQueryCost cost;
     if (tree.nodes.empty()) return cost;
     const Vec3 inv_direction = 1.0 / ray.direction;
@@ -99,7 +105,9 @@ TreeQueryCost closest_hit_cost(const BvhTree& tree, std::span<const Primitive> p
         if (node.count > 0) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 ++cost.primitive_tests;
-                if (const std::optional<Hit> hit = intersect(ray, primitives[tree.order[i]], t_range)) t_range.max = hit->t;
+                const std::optional<Hit> hit = intersect(ray, primitives[tree.order[i]], t_range);
+                if (hit && any_hit) return cost;
+                if (hit) t_range.max = hit->t;
             }
             continue;
         }
@@ -111,6 +119,18 @@ TreeQueryCost closest_hit_cost(const BvhTree& tree, std::span<const Primitive> p
         stack.push_back(second_first ? node.first + 1 : node.first);
     }
     return cost;
+}
+
+} // namespace
+
+TreeQueryCost closest_hit_cost(const BvhTree& tree, std::span<const Primitive> primitives, const Ray& ray,
+                               Interval t_range) {
+    return walk_cost(tree, primitives, ray, t_range, false);
+}
+
+TreeQueryCost occluded_cost(const BvhTree& tree, std::span<const Primitive> primitives, const Ray& ray,
+                            Interval t_range) {
+    return walk_cost(tree, primitives, ray, t_range, true);
 }
 
 BvhTree framework_bvh_tree(std::span<const Aabb> boxes) {

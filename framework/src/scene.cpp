@@ -66,8 +66,9 @@ struct Scene::LabBvh {
     BvhTree tree;
 };
 
-Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
-    : data_(std::move(data)), lab_bvh_(std::make_shared<LabBvh>()), bvh_choice_(bvh), kernels_(kernels),
+Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh, BvhBuilder lab_builder)
+    : data_(std::move(data)), lab_bvh_(std::make_shared<LabBvh>()), bvh_choice_(bvh), lab_builder_(lab_builder),
+      kernels_(kernels),
       remote_(remote_scene_queries()), serial_(next_serial()) {
     // Bounded primitives go into the BVH, in its order; infinite planes follow.
     const std::size_t count = data_.primitives.size();
@@ -95,7 +96,10 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
     // set-up time. (A small one does both on this thread: a thread costs more.)
     auto collapse = [&binary] { return std::make_shared<const WideBvh>(binary); };
     std::future<std::shared_ptr<const WideBvh>> collapsed;
-    if (bounded_count_ >= kParallelSetupCount) {
+    // A grading worker asks the checker every query (remote_queries.hpp): it keeps no
+    // structure of its own, so the graded lab's code finds no framework walk to borrow.
+    const bool queries_here = !(remote_ && remote_->lab_bvh);
+    if (queries_here && bounded_count_ >= kParallelSetupCount) {
         try {
             collapsed = std::async(std::launch::async, collapse);
         } catch (const std::system_error&) {
@@ -108,8 +112,8 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
     // Moved into that order where they are: a big scene's primitives are not copied.
     detail::permute_in_place(std::span<Primitive>(data_.primitives), source_index_);
     for (std::size_t i = 0; i < count; ++i) data_.primitives[i].index = static_cast<std::uint32_t>(i);
-    bvh_ = collapsed.valid() ? collapsed.get() : collapse();
-    if (data_.acceleration == Acceleration::grid)
+    if (queries_here) bvh_ = collapsed.valid() ? collapsed.get() : collapse();
+    if (queries_here && data_.acceleration == Acceleration::grid)
         grid_ = std::make_shared<const UniformGrid>(primitive_boxes(bounded_primitives()));
     // Each area light's points draw numbers of their own: no two lights share them.
     std::uint32_t next_number = 0;
@@ -119,13 +123,13 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh)
     }
 }
 
-std::size_t Scene::acceleration_bytes() const { return grid_ ? grid_->bytes() : bvh_->bytes(); }
+std::size_t Scene::acceleration_bytes() const { return grid_ ? grid_->bytes() : bvh_ ? bvh_->bytes() : 0; }
 
 const BvhTree& Scene::lab_bvh() const {
     // A build that throws (not written yet) leaves the flag unset: the next call tries again.
     std::call_once(lab_bvh_->built, [this] {
         const std::vector<Aabb> boxes = primitive_boxes(bounded_primitives());
-        BvhTree tree = build_bvh(boxes);
+        BvhTree tree = remote_ && remote_->lab_bvh ? remote_->lab_bvh(*this) : (lab_builder_ ? lab_builder_ : build_bvh)(boxes);
         if (const std::string error = bvh_tree_error(tree, boxes); !error.empty())
             throw std::runtime_error("build_bvh() made a tree that is not a hierarchy over the scene's " +
                                      std::to_string(boxes.size()) + " bounded primitives: " + error);
@@ -235,6 +239,7 @@ bool Scene::occluded(const Ray& ray, Interval t_range, std::uint32_t& blocker) c
 }
 
 QueryCost Scene::query_cost(const Ray& ray, Interval t_range, bool any_hit) const {
+    if (!bvh_) throw std::logic_error("Scene::query_cost: this scene's queries are answered by another process");
     const std::span<const Primitive> all = data_.primitives;
     QueryCost cost;
     std::uint64_t nodes = 0;

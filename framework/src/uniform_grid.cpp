@@ -1,5 +1,7 @@
 #include "whitted/engine/uniform_grid.hpp"
 
+#include "clip_to_box.hpp"
+
 #include "whitted/labs.hpp"
 
 #include <algorithm>

@@ -88,6 +88,18 @@ function(whitted_split_programs)
       ENVIRONMENT WHITTED_HOSTILE=${mode} PASS_REGULAR_EXPRESSION "${expected}")
   endforeach()
 
+  # A lab 10 whose walks ask the checker for their answer (lab 1's closest_hit(), the scene's queries):
+  # the checker refuses inside a walk, so every walk test fails and the checker names the call.
+  whitted_lab_object(hostile_10_bvh ${PROJECT_SOURCE_DIR}/instructor/tests/link/hostile_bvh.cpp)
+  whitted_worker(hostile_bvh_worker hostile 10_bvh)
+  foreach(mode IN ITEMS walk_by_lab1 walk_by_scene)
+    add_test(NAME split.hostile.${mode}
+             COMMAND check_10_bvh --worker=$<TARGET_FILE:hostile_bvh_worker> --gtest_filter=BvhClosestHit.*:BvhOccluded.*)
+    set_tests_properties(split.hostile.${mode} PROPERTIES LABELS "split;hostile" TIMEOUT 600 RUN_SERIAL TRUE
+      ENVIRONMENT WHITTED_HOSTILE=${mode}
+      PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 0 tests\\.[^\n]*\n(.|\n)*which grading does not answer inside it")
+  endforeach()
+
   whitted_checker(check_integration labtests_integration ${WHITTED_LABS})
   whitted_worker(worker_integration_reference reference ${WHITTED_LABS})
   add_test(NAME split.integration.reference COMMAND check_integration --worker=$<TARGET_FILE:worker_integration_reference> --gtest_brief=1)

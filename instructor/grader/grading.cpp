@@ -2,6 +2,7 @@
 #include "grader/builder.hpp"
 #include "process/control_group.hpp"
 #include "grader/kit.hpp"
+#include "grader/lab_fences.hpp"
 #include "grader/submission.hpp"
 #include "grader/tamper_check.hpp"
 #include "grader/test_runner.hpp"
@@ -26,6 +27,7 @@ bool is_lab(const std::string& name) { return name != "integration"; }
 
 // The longest run of a lab's tests together (passed_together): the reference's take well under a second.
 constexpr double kTogetherSeconds = 10.0;
+constexpr std::size_t kMaxObjectBytes = std::size_t{128} << 20; // the compiler writes no larger file
 
 // What no run may change: the instructor tree's sources and data, and the checkers.
 FileRecord relied_on_files(const GradingSetup& setup, const WorkerKit& kit) {
@@ -120,6 +122,24 @@ public:
         return sandbox_;
     }
 
+    /// The link fence over the staged kit (lab_fences.hpp).
+    LabFences read_fences() const {
+        try {
+            return LabFences(kit_);
+        } catch (const std::exception& e) {
+            throw GraderFailure(std::string("cannot read the grading kit's symbols: ") + e.what());
+        }
+    }
+
+    /// Why the compiled object of `lab` may not be linked (the fenced functions it calls), or "".
+    static std::string fenced_calls(const LabFences& fences, const fs::path& build, const std::string& lab) {
+        try {
+            return LabFences::describe(lab, fences.refused(lab, read_regular_file(build / (lab + ".o"), kMaxObjectBytes)));
+        } catch (const std::exception& e) {
+            return "labs/" + lab + ".cpp compiled to an object the grader cannot read (" + std::string(e.what()) + ").\n";
+        }
+    }
+
     /// Compiles the lab files and links a worker per lab and one for the whole renderer.
     void build_workers(const std::vector<std::string>& labs) {
         const fs::path build = setup_.work / "build";
@@ -137,15 +157,19 @@ public:
         const WorkerBuild worker_build{kit_, sandbox_, build, setup_.jobs, deadline_};
         setup_.progress("compiling the lab files");
         const std::map<std::string, BuildStep> compiled = compile_labs(worker_build, labs);
+        const LabFences fences = read_fences();
         bool all_compiled = true;
         std::vector<WorkerParts> workers;
         for (const std::string& lab : labs) {
             const BuildStep& step = compiled.at(lab);
-            if (step.ok) {
-                workers.push_back({lab, {lab}});
-            } else {
+            if (!step.ok) {
                 all_compiled = false;
                 failures_[lab] = {Status::compile_error, "labs/" + lab + ".cpp does not compile", first_compiler_errors(step.log, paths_)};
+            } else if (const std::string fenced = fenced_calls(fences, build, lab); !fenced.empty()) {
+                all_compiled = false;
+                failures_[lab] = {Status::compile_error, "labs/" + lab + ".cpp calls what grading does not let it use", fenced};
+            } else {
+                workers.push_back({lab, {lab}});
             }
         }
         if (all_compiled) workers.push_back({"integration", labs});

@@ -87,7 +87,8 @@ std::map<std::string, BuildStep> link_workers(const WorkerBuild& build, const st
         }
         for (const fs::path& library : build.kit.libraries) argv.push_back(library.string());
         argv.insert(argv.end(), build.kit.link_arguments.begin(), build.kit.link_arguments.end());
-        argv.insert(argv.end(), {"-o", "worker_" + worker.name});
+        // Stripped: the worker has no symbol table in which to look up the framework's fenced functions.
+        argv.insert(argv.end(), {"-s", "-o", "worker_" + worker.name});
         specs.push_back(fenced(build, std::move(argv)));
     }
     const std::vector<BuildStep> steps = run_steps(build, specs);

@@ -43,7 +43,8 @@ constexpr std::array<std::string_view, kLastOp + 1> kFunctionNames{
     "Scene::closest_hit", "Scene::occluded", "spawn_ray", "is_lit", "lambert", "blinn_phong",
     "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
     "fresnel_blend", "stratified_sample", "pixel_color", "point_on_light", "light_samples",
-    "concentric_disk", "thin_lens_ray", "box_entry", "build_bvh", "bvh_closest_hit", "bvh_occluded"};
+    "concentric_disk", "thin_lens_ray", "box_entry", "build_bvh", "bvh_closest_hit", "bvh_occluded",
+    "Scene::lab_bvh", "intersect"};
 constexpr bool every_op_named() {
     for (std::string_view name : kFunctionNames)
         if (name.empty()) return false;
@@ -67,6 +68,8 @@ int lab_of(Op op) {
                     if (function == function_of(static_cast<Op>(index))) found[static_cast<std::size_t>(index)] = lab.number;
         found[static_cast<std::size_t>(Op::scene_closest_hit)] = found[static_cast<std::size_t>(Op::scene_occluded)] =
             stage_number(Stage::ray_casting);
+        found[static_cast<std::size_t>(Op::scene_lab_bvh)] = stage_number(Stage::bvh);
+        found[static_cast<std::size_t>(Op::intersect_shape)] = stage_number(Stage::ray_casting);
         return found;
     }();
     const int index = static_cast<int>(op);
@@ -74,6 +77,20 @@ int lab_of(Op op) {
 }
 
 std::string name_of(Op op) { return std::string(function_of(op)) + "()"; }
+
+std::string refused_inside(Op caller, Op callee) {
+    switch (caller) {
+    case Op::box_entry:
+    case Op::build_bvh: return name_of(caller) + " needs no other lab's code";
+    case Op::bvh_closest_hit:
+    case Op::bvh_occluded:
+        if (callee == Op::intersect_sphere || callee == Op::intersect_plane || callee == Op::intersect_triangle ||
+            callee == Op::intersect_shape || callee == Op::scene_lab_bvh)
+            return "";
+        return "a walk of the BVH tests the primitives of the leaves it reaches one by one, with intersect()";
+    default: return "";
+    }
+}
 
 Link::Link(Role role, const ChannelFds& fds, LabSet remote_labs)
     : role_(role), channel_(fds, role == Role::checker),
@@ -97,9 +114,11 @@ void Link::fail(const std::string& reason) {
 Link::Call::Call(Link& link, Op op) : link_(link), lock_(link.mutex_), op_(op) {
     if (!link_.broken_.empty()) throw LinkError(link_.broken_);
     args_.raw(static_cast<std::uint16_t>(op));
+    link_.calls_out_.push_back(op);
 }
 
 Link::Call::~Call() {
+    link_.calls_out_.pop_back();
     link_.active_.resize(link_.active_.size() - pushed_tracers_);
     link_.active_scenes_.resize(link_.active_scenes_.size() - pushed_scenes_);
 }
@@ -296,8 +315,12 @@ void Link::serve(const Frame& frame) {
     try {
         if (lab_of(op) == 0) fail("a call of unknown function " + std::to_string(static_cast<int>(op)));
         if (depth_ > kMaxNesting) fail("calls nested more than " + std::to_string(kMaxNesting) + " deep");
-        if (role_ == Role::checker && !takes_tracer(op) && !allowed(op, nullptr))
+        if (role_ == Role::checker && op != Op::scene_lab_bvh && !takes_tracer(op) && !allowed(op, nullptr))
             fail("the graded lab's code called " + name_of(op) + ", which grading does not answer for it");
+        if (role_ == Role::checker && !calls_out_.empty())
+            if (const std::string why = refused_inside(calls_out_.back(), op); !why.empty())
+                fail("your " + name_of(calls_out_.back()) + " called " + name_of(op) +
+                     ", which grading does not answer inside it: " + why);
         serve_op(*this, op, in, out);
     } catch (const NotImplemented& e) {
         kind = ExceptionKind::not_implemented, message = e.what();

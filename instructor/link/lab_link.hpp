@@ -47,13 +47,23 @@ enum class Op : std::uint16_t {
     point_on_light, light_samples,
     concentric_disk, thin_lens_ray,
     box_entry, build_bvh, bvh_closest_hit, bvh_occluded,
+    scene_lab_bvh,   // the tree lab 10's walk uses: the checker's, so that both sides walk one tree
+    intersect_shape, // the framework's own shapes (boxes, cones), tested where the worker cannot see how
 };
-constexpr int kLastOp = static_cast<int>(Op::bvh_occluded);
+constexpr int kLastOp = static_cast<int>(Op::intersect_shape);
 
 /// The lab (1..kLabCount, from the lab table) whose code answers `op`; 0 for none.
 int lab_of(Op op);
 /// "blinn_phong()" for Op::blinn_phong, for messages.
 std::string name_of(Op op);
+
+/// Why the checker does not answer `callee` while the graded lab's `caller`
+/// runs in the worker, or "" when it does. Beyond the rule of which labs the
+/// worker may use (Link's class comment), a function may not ask for what is
+/// its own answer in disguise: lab 10's walks may only test primitives one by
+/// one (lab 1's closest_hit() or the scene's queries would walk the checker's
+/// tree), and box_entry() and build_bvh() need nothing of the other labs.
+std::string refused_inside(Op caller, Op callee);
 
 enum class Role {
     checker, // owns scenes and tracers; answers only what the policy allows
@@ -132,6 +142,7 @@ class Link {
     std::recursive_mutex mutex_;
     std::string broken_;
     int depth_ = 0;
+    std::vector<Op> calls_out_; // the calls this side has made that are still waiting, innermost last
     std::uint64_t next_handle_ = 1;
     std::vector<ActiveTracer> active_; // tracers of the calls in progress, innermost last
     // Checker: serials of scenes the worker holds, oldest first. Worker: the scenes it holds.

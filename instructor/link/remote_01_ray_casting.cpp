@@ -57,11 +57,27 @@ bool remote_occluded(const Scene& scene, const Ray& ray, Interval t_range) {
     return call.result<bool>();
 }
 
+/// The checker's tree for lab 10's walk: both sides walk one tree, the checker's.
+BvhTree remote_lab_bvh(const Scene& scene) {
+    Link::Call call(Link::current(), Op::scene_lab_bvh);
+    call.scene(scene);
+    return call.result<BvhTree>();
+}
+
+/// A box or cone tested by the checker: the framework's slab test stays out of the worker's hands.
+std::optional<Hit> remote_intersect_shape(const Ray& ray, const Shape& shape, Interval t_range) {
+    Link::Call call(Link::current(), Op::intersect_shape);
+    call.args().put(ray), call.args().put(shape), call.args().put(t_range);
+    return call.result<std::optional<Hit>>();
+}
+
 } // namespace
 
 const RemoteSceneQueries* remote_scene_queries() {
-    static constexpr RemoteSceneQueries queries{remote_closest_hit, remote_occluded};
-    return &queries;
+    // A checker whose lab 1 the worker answers asks the worker only for the scene's queries.
+    static constexpr RemoteSceneQueries checker{remote_closest_hit, remote_occluded, nullptr, nullptr};
+    static constexpr RemoteSceneQueries worker{remote_closest_hit, remote_occluded, remote_lab_bvh, remote_intersect_shape};
+    return Link::current().role() == link::Role::worker ? &worker : &checker;
 }
 
 } // namespace whitted

@@ -3,6 +3,7 @@
 #include "lab_link.hpp"
 
 #include "whitted/labs.hpp"
+#include "whitted/primitive_test_count.hpp"
 
 namespace whitted::link {
 namespace {
@@ -21,6 +22,7 @@ void serve_intersect(std::optional<Hit> (*intersect_shape)(const Ray&, const S&,
     if (!s) throw LinkError("a call with the wrong kind of shape");
     const Interval range = in.get<Interval>();
     end_of(in);
+    PrimitiveTestCount::note_test(); // the other side's walk tests a primitive here (lab 10's tests count them)
     out.put(intersect_shape(ray, *s, range));
 }
 
@@ -191,6 +193,21 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         const Interval range = in.get<Interval>();
         end_of(in);
         return out.put(bvh_occluded(scene, ray, range));
+    }
+    case Op::intersect_shape: { // counted by lab 10's tests as intersect() counts it
+        PrimitiveTestCount::note_test();
+        const Ray ray = in.get<Ray>();
+        const Shape shape = in.get<Shape>();
+        const Interval range = in.get<Interval>();
+        end_of(in);
+        if (std::holds_alternative<Box>(shape)) return out.put(intersect_box(ray, std::get<Box>(shape), range));
+        if (std::holds_alternative<Cone>(shape)) return out.put(intersect_cone(ray, std::get<Cone>(shape), range));
+        throw LinkError("a call of intersect() for a shape of a lab");
+    }
+    case Op::scene_lab_bvh: {
+        const Scene& scene = link.incoming_scene(in);
+        end_of(in);
+        return out.put(scene.lab_bvh());
     }
     case Op::concentric_disk: {
         const Vec2 u = in.get<Vec2>();

@@ -18,6 +18,9 @@
 #                 reference images, the rubric, results.json and the checker's
 #                 report, an orphan left sleeping;
 #   hostile-c     vectors and colours right in x with NaN in y and z;
+#   lab 10 alone  answered through the framework's BVH builder and its box
+#                 primitive, a walk through lab 1's closest_hit() over every
+#                 primitive, a walk that never tests a box: 0 points each;
 #   redteam       the untouched stubs with an attack per lab: including the
 #                 solution, forging the checker's report from its command
 #                 line, a main() of its own with fake tests, reading the
@@ -80,6 +83,21 @@ checker="$tree/$build/instructor/tests/check_04_reflection"
 secrets='secret_texts = ["LEAKED", "FORGED", "RAN the reference", "OVERWROTE"] + [line for line in (open("/etc/shadow").read().splitlines()[:1] if os.access("/etc/shadow", os.R_OK) else []) if line]
 for text in secret_texts:
     ok(text not in json.dumps(results) and text not in html, "a secret reached the student: " + text[:40])'
+
+# lab10_cheat NAME FUNCTION CODE...: the untouched lab 10 stub, alone, with the cheating lines.
+lab10_cheat() {
+    local name=$1
+    shift
+    mkdir -p "$work/$name-labs"
+    cp labs/10_bvh.cpp "$work/$name-labs/"
+    local args=()
+    while [ $# -gt 0 ]; do args+=(10_bvh "$1" "$2"); shift 2; done
+    python3 instructor/scripts/lib/inject.py "$work/$name-labs" "${args[@]}"
+}
+boxless_closest='{ const BvhTree& tree = scene.lab_bvh(); std::optional<Hit> nearest; for (const BvhNode& node : tree.nodes) for (std::uint32_t i = node.first; i < node.first + node.count; ++i) if (std::optional<Hit> hit = intersect(ray, scene.bounded_primitives()[tree.order[i]], t_range)) { t_range.max = hit->t; nearest = hit; } return nearest; }'
+boxless_occluded='{ const BvhTree& tree = scene.lab_bvh(); for (const BvhNode& node : tree.nodes) for (std::uint32_t i = node.first; i < node.first + node.count; ++i) if (intersect(ray, scene.bounded_primitives()[tree.order[i]], t_range)) return true; return false; }'
+lab10_zero="$common"'
+ok(lab_score("10_bvh") == 0, "lab 10 earned " + str(lab_score("10_bvh")) + " points by a cheat")'
 
 # The two modes: bubblewrap where it works, and users and permissions as root.
 modes=()
@@ -166,6 +184,25 @@ lost("04_reflection")
 for t in by_lab["04_reflection"]:
     if t["name"].split(": ")[-1].split(".")[0] in ("MirrorDirection", "HiddenMirrorDirection", "Reflection", "HiddenReflection"):
         ok(t["extra_data"]["status"] != "passed", "a vector with NaN in y and z passed: " + t["name"])'
+
+    # Lab 10 answered by what the framework or the checker would hand over, each alone (the other labs are
+    # missing, so only lab 10 is tested): the framework's builder and box slab test (refused at the link), a
+    # walk through lab 1's closest_hit() over every primitive (refused at the link, and by the checker), and a
+    # walk that never tests a box (every primitive tested: more than the framework's walk of the same tree).
+    lab10_cheat "builder-$mode" build_bvh 'return framework_bvh_tree(boxes);' \
+        box_entry '{ const std::optional<Hit> hit = intersect(ray, Primitive{Box{box.min, box.max}, 0}, t_range); if (hit) return hit->t; return std::nullopt; }'
+    lab10_cheat "lab1-walk-$mode" bvh_closest_hit 'return closest_hit(ray, scene.bounded_primitives(), t_range);' \
+        bvh_occluded 'return closest_hit(ray, scene.bounded_primitives(), t_range).has_value();'
+    lab10_cheat "boxless-walk-$mode" bvh_closest_hit "$boxless_closest" bvh_occluded "$boxless_occluded"
+    for cheat in builder lab1-walk boxless-walk; do
+        grade "$cheat-$mode" "$work/$cheat-$mode-labs" 1 "${options[@]}" --timeout 5
+    done
+    check "builder-$mode" "$lab10_zero"'
+ok(statuses("10_bvh") == {"compile_error"} and shown("10_bvh", "calls whitted::framework_bvh_tree("), "the framework builder: " + str(statuses("10_bvh")))'
+    check "lab1-walk-$mode" "$lab10_zero"'
+ok(statuses("10_bvh") == {"compile_error"} and shown("10_bvh", "calls whitted::closest_hit("), "the walk through lab 1: " + str(statuses("10_bvh")))'
+    check "boxless-walk-$mode" "$lab10_zero"'
+ok(shown("10_bvh", "primitives for these rays, where the framework"), "the walk without boxes: its cost not named")'
 
     # The untouched stubs, each with an attack on the grader.
     mkdir -p "$work/redteam-$mode-labs"

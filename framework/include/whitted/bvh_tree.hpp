@@ -65,6 +65,11 @@ struct TreeQueryCost {
 TreeQueryCost closest_hit_cost(const BvhTree& tree, std::span<const Primitive> primitives, const Ray& ray,
                                Interval t_range);
 
+/// The tests an occlusion query makes through `tree` with the framework's
+/// traversal (the nearer child first, stopping at the first hit).
+TreeQueryCost occluded_cost(const BvhTree& tree, std::span<const Primitive> primitives, const Ray& ray,
+                            Interval t_range);
+
 /// The framework's own hierarchy over the boxes (binned SAH, the reference
 /// renderer's) in this layout: the yardstick lab 10's trees are measured against.
 BvhTree framework_bvh_tree(std::span<const Aabb> boxes);

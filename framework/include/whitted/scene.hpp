@@ -64,12 +64,17 @@ struct RemoteSceneQueries;
 /// No primitive: the last shadow feeler was not blocked (Scene::occluded).
 inline constexpr std::uint32_t kNoBlocker = 0xffffffffu;
 
+/// What builds lab 10's tree over the boxes of a scene's bounded primitives.
+using BvhBuilder = BvhTree (*)(std::span<const Aabb> boxes);
+
 class Scene {
   public:
     /// Takes the data and builds the acceleration structure over its primitives.
     /// With `kernels` (the reference renderer's), leaves are tested with them
-    /// instead of the labs' code (see leaf_kernels.hpp).
-    explicit Scene(SceneData data, const LeafKernels* kernels = nullptr, BvhChoice bvh = BvhChoice::framework);
+    /// instead of the labs' code (see leaf_kernels.hpp). `lab_builder` builds
+    /// lab_bvh() instead of lab 10's build_bvh(): tests of the walk alone give it a known tree.
+    explicit Scene(SceneData data, const LeafKernels* kernels = nullptr, BvhChoice bvh = BvhChoice::framework,
+                   BvhBuilder lab_builder = nullptr);
 
     const Camera& camera() const { return data_.camera; }
     const Color& background() const { return data_.background; }
@@ -90,9 +95,10 @@ class Scene {
     std::span<const Primitive> bounded_primitives() const { return primitives().first(bounded_count_); }
     /// The acceleration structure the file asks for.
     Acceleration acceleration() const { return data_.acceleration; }
-    /// Lab 10's hierarchy over bounded_primitives(), built by its build_bvh() the
-    /// first time it is asked for (then kept) and checked: a tree that is not a
-    /// hierarchy over those primitives throws std::runtime_error saying why.
+    /// Lab 10's hierarchy over bounded_primitives(), built by its build_bvh() (or
+    /// the constructor's `lab_builder`) the first time it is asked for (then
+    /// kept) and checked: a tree that is not a hierarchy over those primitives
+    /// throws std::runtime_error saying why. In a grading worker, the checker's tree.
     const BvhTree& lab_bvh() const;
     int max_depth() const { return data_.max_depth; }
 
@@ -160,6 +166,7 @@ class Scene {
     struct LabBvh;
     std::shared_ptr<LabBvh> lab_bvh_;    // lab 10's tree, built on first use, shared by copies
     BvhChoice bvh_choice_ = BvhChoice::framework;
+    BvhBuilder lab_builder_ = nullptr;   // null: lab 10's build_bvh()
     const LeafKernels* kernels_ = nullptr;
     const RemoteSceneQueries* remote_ = nullptr; // remote_scene_queries(), looked up once
     std::vector<std::uint32_t> source_index_; // for each primitive, its index in the SceneData given

@@ -7,7 +7,9 @@
 // the framework's, which returns nullptr.
 #pragma once
 
+#include "whitted/bvh_tree.hpp"
 #include "whitted/hit.hpp"
+#include "whitted/shapes.hpp"
 #include "whitted/interval.hpp"
 
 #include <optional>
@@ -19,6 +21,11 @@ class Scene;
 struct RemoteSceneQueries {
     std::optional<Hit> (*closest_hit)(const Scene& scene, const Ray& ray, Interval t_range);
     bool (*occluded)(const Scene& scene, const Ray& ray, Interval t_range);
+    /// Lab 10's tree for the scene, from the process that owns the scene (null: it is built here).
+    BvhTree (*lab_bvh)(const Scene& scene);
+    /// The framework's own shapes (boxes, cones) tested by the other process, so that
+    /// their slab test is never in the graded lab's hands (null: they are tested here).
+    std::optional<Hit> (*intersect_shape)(const Ray& ray, const Shape& shape, Interval t_range);
 };
 
 /// The queries of the other process, or nullptr in every program but a grading checker or worker.

@@ -5,6 +5,7 @@
 
 #include "image_check.hpp"
 #include "lab_helpers.hpp"
+#include "walk_tests.hpp"
 
 #include <gtest/gtest.h>
 
@@ -54,16 +55,19 @@ TEST(HiddenBvhClosestHit, SpheresOnlyWithRandomRanges) {
     TestNumbers numbers{41};
     std::vector<Primitive> spheres;
     for (int i = 0; i < 400; ++i) spheres.push_back({Sphere{numbers.point(10.0), 0.05 + 0.5 * numbers.next()}, 0});
-    const Scene scene(bvh_test_scene(spheres, 10.0), nullptr, BvhChoice::lab);
+    const Scene scene = scene_with_known_tree(bvh_test_scene(spheres, 10.0));
+    WalkTests closest, occluded;
     for (const Ray& ray : bvh_test_rays(scene.camera(), 10.0, 42)) {
         const double low = 3.0 * numbers.next(), high = low + 20.0 * numbers.next();
         const Interval range{low, high};
-        const std::optional<Hit> yours = bvh_closest_hit(scene, ray, range);
+        const std::optional<Hit> yours = counted_closest_hit(scene, ray, range, closest);
         const std::optional<Hit> every = closest_hit(ray, scene.bounded_primitives(), range);
         ASSERT_EQ(yours.has_value(), every.has_value());
         if (every) { EXPECT_EQ(yours->t, every->t); }
-        EXPECT_EQ(bvh_occluded(scene, ray, range), every.has_value());
+        EXPECT_EQ(counted_occluded(scene, ray, range, occluded), every.has_value());
     }
+    expect_about_as_few_tests(closest, "bvh_closest_hit()");
+    expect_about_as_few_tests(occluded, "bvh_occluded()");
 }
 
 TEST(HiddenLab10Image, HiddenSceneMatchesTheReference) {
