@@ -1,4 +1,5 @@
 #include "whitted/bvh_tree.hpp"
+#include "tree_yardsticks.hpp"
 
 #include "clip_to_box.hpp"
 

@@ -4,6 +4,7 @@
 // a scene that tests every primitive (accel none).
 #include "whitted/bvh_tree.hpp"
 #include "whitted/scene.hpp"
+#include "tree_yardsticks.hpp"
 
 #include <gtest/gtest.h>
 

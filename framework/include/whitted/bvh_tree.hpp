@@ -7,6 +7,8 @@
 // primitives' order. The checks here tell a wrong tree from a slow one: a tree
 // that loses a primitive or has a box too small gives wrong pictures; a tree
 // that is merely poor gives the right picture slowly, and its cost says so.
+// (The yardsticks the tests measure a tree and a walk with are the framework's
+// own, in framework/src/tree_yardsticks.hpp: not for the labs to call.)
 #pragma once
 
 #include "whitted/aabb.hpp"
@@ -45,34 +47,6 @@ std::string bvh_tree_error(const BvhTree& tree, std::span<const Aabb> boxes);
 /// units of one primitive test: sum over inner nodes of area / root area times
 /// `node_cost`, plus sum over leaves of area / root area times their count.
 double sah_cost(const BvhTree& tree, double node_cost = 1.0);
-
-/// The intersection tests of one ray query through a tree.
-struct TreeQueryCost {
-    std::uint64_t nodes_visited = 0;    // nodes whose box the ray was tested against
-    std::uint64_t primitive_tests = 0;  // ray-primitive tests
-
-    TreeQueryCost& operator+=(const TreeQueryCost& other) {
-        nodes_visited += other.nodes_visited;
-        primitive_tests += other.primitive_tests;
-        return *this;
-    }
-};
-
-/// The tests a closest-hit query makes through `tree` with the framework's
-/// traversal (the nearer child first, boxes beyond the nearest hit skipped):
-/// the measure of a tree's quality that does not depend on whose traversal runs.
-/// `primitives[i]` is the primitive of `boxes[i]` the tree was built over.
-TreeQueryCost closest_hit_cost(const BvhTree& tree, std::span<const Primitive> primitives, const Ray& ray,
-                               Interval t_range);
-
-/// The tests an occlusion query makes through `tree` with the framework's
-/// traversal (the nearer child first, stopping at the first hit).
-TreeQueryCost occluded_cost(const BvhTree& tree, std::span<const Primitive> primitives, const Ray& ray,
-                            Interval t_range);
-
-/// The framework's own hierarchy over the boxes (binned SAH, the reference
-/// renderer's) in this layout: the yardstick lab 10's trees are measured against.
-BvhTree framework_bvh_tree(std::span<const Aabb> boxes);
 
 /// The boxes of bounded primitives, in order (an unbounded primitive throws std::invalid_argument).
 std::vector<Aabb> primitive_boxes(std::span<const Primitive> primitives);

@@ -1,9 +1,10 @@
-// Lab 10 written by a student who asks the checker for the walk's answer: the
-// walks call lab 1's closest_hit() over every primitive, or the scene's own
-// queries (WHITTED_HOSTILE says which). The grader's link refuses such a lab
-// before it runs (instructor/grader/lab_fences.hpp); this worker is linked
-// without that fence, to show the checker refuses the calls too: every walk
-// test fails and the checker says why.
+// Lab 10 written by a student who asks the checker for the answers: the walks
+// call lab 1's closest_hit() over every primitive, or the scene's own queries,
+// and box_entry() hands the box to intersect() as a box primitive, whose slab
+// test is the framework's (WHITTED_HOSTILE says which). The grader's link
+// refuses the first two before the lab runs (instructor/grader/lab_fences.hpp);
+// this worker is linked without that fence, to show the checker refuses the
+// calls too: every such test fails and the checker says why.
 #include "whitted/labs.hpp"
 
 #include <cstdlib>
@@ -12,14 +13,21 @@
 namespace whitted {
 namespace {
 
-bool through_the_scene() {
+bool mode_is(const char* name) {
     const char* mode = std::getenv("WHITTED_HOSTILE");
-    return mode && std::string(mode) == "walk_by_scene";
+    return mode && std::string(mode) == name;
 }
+
+bool through_the_scene() { return mode_is("walk_by_scene"); }
 
 } // namespace
 
-std::optional<double> box_entry(const Ray&, const Vec3&, const Aabb&, Interval) { not_implemented(); }
+std::optional<double> box_entry(const Ray& ray, const Vec3&, const Aabb& box, Interval t_range) {
+    if (!mode_is("box_by_intersect")) not_implemented();
+    const std::optional<Hit> hit = intersect(ray, Primitive{Box{box.min, box.max}, 0}, t_range);
+    if (hit) return hit->t;
+    return std::nullopt;
+}
 
 BvhTree build_bvh(std::span<const Aabb>) { not_implemented(); }
 

@@ -6,6 +6,7 @@
 #include "whitted/bvh_tree.hpp"
 #include "whitted/labs.hpp"
 #include "whitted/scene_loader.hpp"
+#include "tree_yardsticks.hpp"
 
 #include <gtest/gtest.h>
 

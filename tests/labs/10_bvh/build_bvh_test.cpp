@@ -9,6 +9,7 @@
 #include "whitted/labs.hpp"
 
 #include "lab_helpers.hpp"
+#include "tree_yardsticks.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,6 +6,7 @@
 #include "image_check.hpp"
 #include "lab_helpers.hpp"
 #include "walk_tests.hpp"
+#include "tree_yardsticks.hpp"
 
 #include <gtest/gtest.h>
 
