@@ -49,16 +49,18 @@ struct GradeAllOptions {
     bool allow_exposed_answers = false;
 };
 
-// The class: FOLDER's subfolders (the students), sorted; hidden folders and
-// __MACOSX skipped, files and links noted.
+// The class: FOLDER's subfolders and links to folders (the students), sorted;
+// hidden folders and __MACOSX skipped, files and other links noted.
 std::vector<std::string> list_students(const fs::path& folder, bool quiet) {
     std::vector<std::string> students, ignored;
     try {
         for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
             const std::string name = entry.path().filename().string();
             if (name.starts_with(".") || name == "__MACOSX") continue;
-            if (!entry.is_symlink() && entry.is_directory()) students.push_back(name);
-            else ignored.push_back(name + (entry.is_symlink() ? " (a link)" : ""));
+            // A link to a folder is a student too, whom grade refuses (not graded): a link could lead to the solution.
+            std::error_code unreadable; // a link in a loop leads nowhere: noted like a file
+            if (entry.is_directory(unreadable)) students.push_back(name);
+            else ignored.push_back(name + (entry.is_symlink(unreadable) ? " (a link)" : ""));
         }
     } catch (const fs::filesystem_error& error) {
         throw UsageError("cannot read " + folder.string() + ": " + error.code().message());
@@ -194,7 +196,8 @@ Command add_grade_all_command(CLI::App& app) {
     auto options = std::make_shared<GradeAllOptions>();
     CLI::App* command = app.add_subcommand("grade-all", "Grade every student's submission in a folder and write the class's CSV (instructors).");
     command->footer(
-        "Each subfolder of FOLDER is one student, named by the folder (hidden folders and __MACOSX are skipped); each is graded "
+        "Each subfolder of FOLDER is one student, named by the folder (hidden folders and __MACOSX are skipped; a link to a "
+        "folder is listed not_graded, as grade refuses it); each is graded "
         "by `whitted grade` in a child process, its output in GRADES_DIR/<student>/grade.log.\n"
         "The CSV: student,score,max_score,status,<one column per lab>,integration; status is graded, not_graded (a submission the student must fix, e.g. lab files in two places), grader_failure or error.\n"
         "Exit code: 0 every student graded (whatever their points) or not_graded, 2 usage error, 3 a grading failed or could not finish "

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdlib.h>
 
 namespace whitted {
@@ -94,14 +95,17 @@ int run_grade(const GradeOptions& options) {
         !fs::is_regular_file(setup.instructor_tree / "instructor" / "rubric.json"))
         throw UsageError(setup.instructor_tree.string() + " is not an instructor tree (no CMakeLists.txt, solution/ or instructor/rubric.json)");
     const std::vector<std::string> labs = lab_names();
-    const fs::path submission = fs::weakly_canonical(fs::absolute(options.submission));
+    // A submission that is a link is not followed (nor resolved: its folder is the link's).
+    const std::optional<std::string> linked = linked_submission(options.submission);
+    const fs::path submission = linked ? fs::absolute(options.submission).lexically_normal() : fs::weakly_canonical(fs::absolute(options.submission));
     GradingProblem problem;
+    if (linked) problem = {GradingProblem::Kind::submission, *linked};
     try {
-        setup.submission_labs = find_lab_folder(submission, labs);
+        if (!linked) setup.submission_labs = find_lab_folder(submission, labs);
     } catch (const AmbiguousSubmission& error) {
         problem = {GradingProblem::Kind::submission, error.what()};
-        setup.submission_labs = {submission, "", 0};
     }
+    if (!problem.message.empty()) setup.submission_labs = {submission, "", 0};
     setup.out = fs::weakly_canonical(fs::absolute(options.out));
     setup.instructor_build = fs::weakly_canonical(fs::absolute(options.instructor_build));
     check_folder(setup.out, kGradeOutputMarker, "--out", {submission, setup.submission_labs.folder, setup.instructor_tree, setup.instructor_build});
@@ -177,7 +181,7 @@ Command add_grade_command(CLI::App& app) {
                     "that cannot be used, lab files in two places), 3 grader failure (whitted itself failed).");
     command->add_option("submission", options->submission,
                         "The student's submission: the lab files (NN_*.cpp) at its top, in its labs/, or one folder down "
-                        "(my-project/ or my-project/labs/)")
+                        "(my-project/ or my-project/labs/); a folder, not a link to one")
         ->required()
         ->check(CLI::ExistingDirectory);
     command->add_option("--out", options->out, "Folder for results.json, report.html, the copied labs and each test's files (default ./grading)");

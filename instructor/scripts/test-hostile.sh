@@ -28,8 +28,8 @@
 #                 opening a socket, sharing the grader's session (terminal);
 # and once: files (lab files that are links to the solution and to a secret, a
 # FIFO, a folder, an oversized file, #include "/dev/zero"), GoogleTest in the
-# lab files (its exceptions, tests of its own) and a labs/ folder that is a
-# link to the solution.
+# lab files (its exceptions, tests of its own), a labs/ folder that is a link
+# to the solution and a submission that is itself one.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 if ! command -v bwrap > /dev/null; then bash scripts/install-deps.sh --sandbox || true; fi
@@ -44,6 +44,44 @@ protected_hash() {
         sort -z | xargs -0 sha256sum | sha256sum | cut -d' ' -f1
 }
 before=$(protected_hash)
+
+# checked NAME WHAT ARGS... < PYTHON: runs the Python (its ok(condition, text) collects problems; ARGS are its
+# sys.argv[1:]) and says "ok NAME: WHAT", or FAIL with the problems.
+checked() {
+    local name=$1 what=$2
+    shift 2
+    if python3 -c 'import sys
+script = sys.argv.pop(1)
+problems = []
+def ok(condition, text):
+    if not condition: problems.append(text)
+exec(script)
+for problem in problems: print("  " + problem)
+sys.exit(1 if problems else 0)' "$(cat)" "$@"; then
+        echo "ok   $name: $what"
+    else
+        echo "FAIL $name: see above"
+        failures=$((failures + 1))
+    fi
+}
+
+# refused_link NAME LINK: the grading NAME refused the submission LINK, a link to the solution: score 0, the reason in
+# results.json and on the terminal, and no file of the solution (by content) in its output folder.
+refused_link() {
+    checked "$1" "a submission that is a link is refused, nothing copied" "$work/$1" "$2" "$solution_dir" <<'EOF'
+import hashlib, json, os
+out, link, solution = sys.argv[1:4]
+def digests(folder):
+    return {hashlib.sha256(open(os.path.join(top, name), "rb").read()).hexdigest(): os.path.join(top, name)
+            for top, _, names in os.walk(folder) for name in names if not os.path.islink(os.path.join(top, name))}
+results = json.load(open(out + "/results.json"))
+ok(results["score"] == 0 and not results["tests"], f"graded: score {results['score']}, {len(results['tests'])} tests")
+ok(link + " is a symbolic link" in results["output"], "results.json does not say why: " + results["output"][:200])
+ok(link + " is a symbolic link" in open(out + ".log", errors="replace").read(), "the terminal does not say why")
+copied = set(digests(out)) & set(digests(solution))
+ok(not copied, "the solution was copied: " + ", ".join(sorted(digests(out)[d] for d in copied)))
+EOF
+}
 
 # hostile NAME CODE...: a copy of the reference with the injected lines.
 hostile() {
@@ -233,6 +271,10 @@ ok(not any("Forged" in t["name"] for t in results["tests"]), "a test the submiss
 grade linked-folder "$work/linked-submission" 1 "${file_options[@]}"
 check linked-folder "$common$secrets"'
 ok(results["score"] == 0, "points for a labs/ folder linked to the solution: " + str(results["score"]))'
+# A submission that is itself a link to the solution: refused (exit 2, a results.json saying why), nothing copied.
+ln -s "$solution_dir" "$work/linked-top-submission"
+grade linked-top "$work/linked-top-submission" 2 "${file_options[@]}"
+refused_link linked-top linked-top-submission
 chmod "$tree_mode" "$tree"
 
 after=$(protected_hash)
