@@ -32,7 +32,9 @@
 # to the solution and a submission that is itself one; and, with a rubric of
 # labs 1 and 2 alone, "terminal": folder names, compiler messages and printing
 # made of terminal control sequences, graded by grade and grade-all, whose
-# bytes on the terminal must hold no control character but newline and tab.
+# bytes on the terminal must hold no control character but newline and tab,
+# the grade with a hidden test's worker sleeping till the budget runs out,
+# which must leave every visible test as it is without the sleep.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 if ! command -v bwrap > /dev/null; then bash scripts/install-deps.sh --sandbox || true; fi
@@ -306,7 +308,12 @@ two_labs=(--rubric "$work/two-labs.json" "${file_options[@]:2}")
 # The terminal is not the student's: folder names made of control sequences (the window title by OSC 0, the
 # clipboard by OSC 52, a cleared screen with a fake line, CSI as the C1 code point and as a lone byte, a carriage
 # return), the compiler's messages about them (#error, an #include of such a name) and what the code prints in
-# failing tests. grade (without -q: its progress too) and grade-all print none of it raw.
+# failing tests. grade (without -q: its progress too) and grade-all print none of it raw. The grade is also the case
+# of the budget: a hidden test's worker sleeps (on the camera at (10, 20, 30), an input of HiddenPrimaryRay) till the
+# budget runs out; hidden tests run after every visible test, so each visible test ends as it does without the sleep
+# (passed or failed: none is "not run") and only hidden tests are cut short. The budget is half as long again as
+# grade-all's grading of the same submission without the sleep took (at least 10 s), so that a machine busy with
+# other work still runs every visible test within it.
 esc=$'\e]0;pwned-title\a\e]52;c;aGFja2Vk\a\e[2J\e[Hfull marks 100 of 100\xc2\x9b31m\x9b1m\r'
 student="$work/terminal/student$esc"
 mkdir -p "$student/labs" "$work/terminal-out" "$work/terminal-ambiguous/labs" "$work/terminal-ambiguous/old$esc" "$work/terminal-class"
@@ -315,22 +322,26 @@ python3 instructor/scripts/lib/inject.py "$student/labs" 01_ray_casting primary_
     '#include <cstdio> std::fputs("\x1b]0;pwned-title\x07\x1b]52;c;aGFja2Vk\x07\x1b[2J\x1b[Hfull marks\xc2\x9b" "31m\x9b" "1m\r\n", stdout); return Ray{camera.eye, camera.ze};'
 printf '#error \e]0;pwned-title\a\e[2J\xc2\x9b31m\x9b1m\n#include "\e]52;c;aGFja2Vk\a.h"\n' >> "$student/labs/02_shadows.cpp"
 cp -r "$student" "$work/terminal-class/"
+python3 instructor/scripts/lib/inject.py "$student/labs" 01_ray_casting primary_ray \
+    '#include <chrono> #include <thread> if (camera.eye == Point3(10, 20, 30)) std::this_thread::sleep_for(std::chrono::hours(1));'
 cp solution/01_ray_casting.cpp "$work/terminal-ambiguous/labs/"
 cp solution/01_ray_casting.cpp "$work/terminal-ambiguous/old$esc/"
 ln -s "$solution_dir" "$work/terminal-class/linked$esc"
 ln -s "$solution_dir" "$work/terminal-link$esc"
 echo "not a student" > "$work/terminal-class/file$esc"
-# terminal NAME EXPECTED_EXIT COMMAND...: runs a whitted command, its stdout and stderr in $work/NAME.out and .err.
+# terminal NAME EXPECTED_EXIT COMMAND...: runs a whitted command, its stdout and stderr in $work/NAME.out and .err,
+# the seconds it took in $seconds.
 terminal() {
     local name=$1 expected=$2
     shift 2
     timed "$name" "$expected" "$work/$name.out" "$work/$name.err" "$whitted" "$@" --jobs "$jobs" "${two_labs[@]}"
 }
 terminal terminal-class 0 grade-all "$work/terminal-class" --csv "$work/terminal-class.csv" --out "$work/terminal-grades" --timeout 2
-terminal terminal-grade 1 grade "$student" --out "$work/terminal-out/student$esc" --timeout 2
+budget=$(python3 -c "print(max(10, round(1.5 * $seconds)))")
+terminal terminal-grade 1 grade "$student" --out "$work/terminal-out/student$esc" --budget "$budget"
 terminal terminal-ambiguous 2 grade "$work/terminal-ambiguous" --out "$work/terminal-ambiguous-out"
 terminal terminal-link 2 grade "$work/terminal-link$esc" --out "$work/terminal-link-out"
-checked terminal "no control character of a submission reaches the terminal (grade, grade-all)" "$work" "$esc" <<'EOF'
+checked terminal "no control character of a submission reaches the terminal (grade, grade-all); no budget channel (--budget $budget)" "$work" "$esc" <<'EOF'
 import csv, json, os
 work, esc = sys.argv[1], os.fsencode(sys.argv[2])
 shown = b"\\x1b]0;pwned-title\\x07\\x1b]52;c;aGFja2Vk\\x07\\x1b[2J\\x1b[Hfull marks 100 of 100\\u009b31m\\x9b1m\\x0d"
@@ -369,6 +380,10 @@ try:
     html.decode("utf-8")
 except UnicodeDecodeError as error:
     ok(False, f"report.html is not UTF-8 at byte {error.start}")
+# No budget channel: the visible tests ended as without the sleep, which only cut hidden tests short.
+visible = {t["extra_data"]["status"] for t in lab1 if t["visibility"] != "hidden"}
+ok(visible == {"passed", "failed", "skipped"}, f"the hidden test's time changed the visible tests of lab 1: {sorted(visible)}")
+ok(any(t["visibility"] == "hidden" and t["extra_data"]["status"] == "failed" for t in lab1), "no hidden test was cut short")
 EOF
 chmod "$tree_mode" "$tree"
 
