@@ -1,5 +1,6 @@
 #include "grader/class_grades.hpp"
 #include "grader/submission.hpp"
+#include "grader/text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -128,10 +129,11 @@ std::string class_summary(std::vector<StudentGrade> grades) {
     for (const StudentGrade& grade : grades) {
         if (grade.status == GradeStatus::graded) continue;
         ++failed;
-        failures += "  " + grade.student + ": " + (grade.status == GradeStatus::grader_failure ? "grader failure: "
-                                                  : grade.status == GradeStatus::not_graded ? "not graded: "
-                                                                                           : "error: ") +
-                    grade.reason + "\n";
+        failures += "  " + terminal_text(grade.student) + ": " +
+                    (grade.status == GradeStatus::grader_failure ? "grader failure: "
+                     : grade.status == GradeStatus::not_graded   ? "not graded: "
+                                                                 : "error: ") +
+                    terminal_text(grade.reason) + "\n";
     }
     if (failed) text += "not graded (" + std::to_string(failed) + "):\n" + failures;
     return text;

@@ -56,7 +56,8 @@ std::string csv_field(const std::string& text);
 std::string class_csv(std::vector<StudentGrade> grades, const std::vector<std::string>& labs);
 
 /// The closing summary: how many were graded, their mean and median score,
-/// and every student whose grading failed, by name, with the reason.
+/// and every student whose grading failed, by name, with the reason (each as
+/// terminal_text shows it: one line, no control characters).
 std::string class_summary(std::vector<StudentGrade> grades);
 
 } // namespace whitted::grade

@@ -1,4 +1,5 @@
 #include "grader/class_progress.hpp"
+#include "grader/text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +7,14 @@
 namespace whitted::grade {
 namespace {
 
-// A student's name cut to fit the line.
-std::string short_name(const std::string& name) { return name.size() <= 24 ? name : name.substr(0, 23) + "~"; }
+// A student's name as the terminal may show it, cut to fit the line (where a character starts).
+std::string short_name(const std::string& name) {
+    const std::string shown = terminal_text(name);
+    if (shown.size() <= 24) return shown;
+    std::size_t cut = 23;
+    while (cut > 0 && (static_cast<unsigned char>(shown[cut]) & 0xc0) == 0x80) --cut;
+    return shown.substr(0, cut) + "~";
+}
 
 std::string outcome(const StudentGrade& grade) {
     if (grade.status == GradeStatus::graded && grade.points)
@@ -36,13 +43,21 @@ void ClassProgress::finished(const StudentGrade& grade, double seconds) {
     last_ = short_name(grade.student) + ": " + outcome(grade);
     if (quiet_) return;
     const std::string why = grade.status == GradeStatus::graded ? "" : ": " + grade.reason;
+    // The student's name and the reason are the submission's: printed as the terminal may show them, the grader's own
+    // control sequences (erasing and redrawing the line) apart.
     if (terminal_) {
         // A failure stays on the screen above the redrawn line.
-        if (grade.status != GradeStatus::graded) std::fprintf(stream_, "\r\033[K%s: %s%s\n", grade.student.c_str(), outcome(grade).c_str(), why.c_str());
+        if (grade.status != GradeStatus::graded) {
+            std::fputs("\r\033[K", stream_);
+            print_line(stream_, grade.student + ": " + outcome(grade) + why);
+        }
         draw();
         return;
     }
-    std::fprintf(stream_, "[%zu/%zu] %s: %s%s (%.1f s)\n", done_, total_, grade.student.c_str(), outcome(grade).c_str(), why.c_str(), seconds);
+    char count[64], time[32];
+    std::snprintf(count, sizeof count, "[%zu/%zu] ", done_, total_);
+    std::snprintf(time, sizeof time, " (%.1f s)", seconds);
+    print_line(stream_, count + grade.student + ": " + outcome(grade) + why + time);
     std::fflush(stream_);
 }
 
@@ -65,7 +80,9 @@ void ClassProgress::draw() {
         const double left = busy_seconds_ / static_cast<double>(done_) * static_cast<double>(total_ - done_) / parallel_;
         line += "  ETA " + format_duration(left - std::chrono::duration<double>(last_draw_ - last_finish_).count());
     }
-    std::fprintf(stream_, "\r%s\033[K", line.c_str());
+    std::fputs("\r", stream_);
+    print_text(stream_, line);
+    std::fputs("\033[K", stream_);
     std::fflush(stream_);
 }
 

@@ -8,6 +8,7 @@
 #include "grader/class_progress.hpp"
 #include "grader/path_inside.hpp"
 #include "grader/submission.hpp"
+#include "grader/text.hpp"
 #include "process/process_runner.hpp"
 #include "usage_error.hpp"
 
@@ -49,16 +50,18 @@ struct GradeAllOptions {
     bool allow_exposed_answers = false;
 };
 
-// The class: FOLDER's subfolders (the students), sorted; hidden folders and
-// __MACOSX skipped, files and links noted.
+// The class: FOLDER's subfolders and links to folders (the students), sorted;
+// hidden folders and __MACOSX skipped, files and other links noted.
 std::vector<std::string> list_students(const fs::path& folder, bool quiet) {
     std::vector<std::string> students, ignored;
     try {
         for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
             const std::string name = entry.path().filename().string();
             if (name.starts_with(".") || name == "__MACOSX") continue;
-            if (!entry.is_symlink() && entry.is_directory()) students.push_back(name);
-            else ignored.push_back(name + (entry.is_symlink() ? " (a link)" : ""));
+            // A link to a folder is a student too, whom grade refuses (not graded): a link could lead to the solution.
+            std::error_code unreadable; // a link in a loop leads nowhere: noted like a file
+            if (entry.is_directory(unreadable)) students.push_back(name);
+            else ignored.push_back(name + (entry.is_symlink(unreadable) ? " (a link)" : ""));
         }
     } catch (const fs::filesystem_error& error) {
         throw UsageError("cannot read " + folder.string() + ": " + error.code().message());
@@ -68,7 +71,7 @@ std::vector<std::string> list_students(const fs::path& folder, bool quiet) {
     if (!quiet && !ignored.empty()) {
         std::string names;
         for (const std::string& name : ignored) names += (names.empty() ? "" : ", ") + name;
-        std::fprintf(stderr, "note: ignored what is not a student's folder in %s: %s\n", folder.c_str(), names.c_str());
+        print_line(stderr, "note: ignored what is not a student's folder in " + folder.string() + ": " + names);
     }
     if (students.empty()) throw UsageError(folder.string() + " has no student folders (one subfolder per student)");
     return students;
@@ -172,15 +175,15 @@ int run_grade_all(const GradeAllOptions& options) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);
     if (stop_signal) {
-        std::fprintf(stderr, "whitted grade-all: interrupted: %zu of %zu students graded, %zu gradings killed; %s not written\n",
-                     grades.size(), students.size(), running.size(), csv.c_str());
+        print_line(stderr, "whitted grade-all: interrupted: " + std::to_string(grades.size()) + " of " + std::to_string(students.size()) +
+                               " students graded, " + std::to_string(running.size()) + " gradings killed; " + csv.string() + " not written");
         return 130;
     }
     std::vector<std::string> columns = lab_names();
     columns.push_back("integration");
     write_atomically(csv, class_csv(grades, columns));
-    std::printf("%swrote %s; each student's grading is in %s/<student>/ (grade.log, results.json, report.html)\n",
-                class_summary(grades).c_str(), csv.c_str(), out.c_str());
+    print_text(stdout, class_summary(grades));
+    print_line(stdout, "wrote " + csv.string() + "; each student's grading is in " + out.string() + "/<student>/ (grade.log, results.json, report.html)");
     // A submission the student must fix (not_graded) is theirs to fix, not a failure of the grading.
     const bool all_graded = std::all_of(grades.begin(), grades.end(), [](const StudentGrade& g) {
         return g.status == GradeStatus::graded || g.status == GradeStatus::not_graded;
@@ -194,7 +197,8 @@ Command add_grade_all_command(CLI::App& app) {
     auto options = std::make_shared<GradeAllOptions>();
     CLI::App* command = app.add_subcommand("grade-all", "Grade every student's submission in a folder and write the class's CSV (instructors).");
     command->footer(
-        "Each subfolder of FOLDER is one student, named by the folder (hidden folders and __MACOSX are skipped); each is graded "
+        "Each subfolder of FOLDER is one student, named by the folder (hidden folders and __MACOSX are skipped; a link to a "
+        "folder is listed not_graded, as grade refuses it); each is graded "
         "by `whitted grade` in a child process, its output in GRADES_DIR/<student>/grade.log.\n"
         "The CSV: student,score,max_score,status,<one column per lab>,integration; status is graded, not_graded (a submission the student must fix, e.g. lab files in two places), grader_failure or error.\n"
         "Exit code: 0 every student graded (whatever their points) or not_graded, 2 usage error, 3 a grading failed or could not finish "
@@ -227,10 +231,10 @@ Command add_grade_all_command(CLI::App& app) {
                        try {
                            return run_grade_all(*options);
                        } catch (const UsageError& error) {
-                           std::fprintf(stderr, "whitted grade-all: %s\n", error.what());
+                           print_line(stderr, std::string("whitted grade-all: ") + error.what());
                            return 2;
                        } catch (const std::exception& error) {
-                           std::fprintf(stderr, "whitted grade-all: %s\n", error.what());
+                           print_line(stderr, std::string("whitted grade-all: ") + error.what());
                            return 3;
                        }
                    }};

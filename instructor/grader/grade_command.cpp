@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdlib.h>
 
 namespace whitted {
@@ -77,13 +78,29 @@ fs::path make_work_folder() {
     return pattern;
 }
 
+// The line naming the two reports (the folder's name may be a student's: printed as the terminal may show it).
+void print_written(const fs::path& out) {
+    print_line(stdout, "wrote " + (out / "results.json").string() + " and " + (out / "report.html").string());
+}
+
 void print_table(const GradingResult& result, const fs::path& out) {
-    std::printf("%-17s %7s / %-7s %s\n", "lab", "points", "max", "tests");
-    for (const LabResult& lab : result.labs) std::printf("%s\n", lab_summary_line(lab, Audience::instructor).c_str());
-    std::printf("%-17s %7s / %-7s\n", "total", format_points(result.score_cents).c_str(), format_points(result.max_cents).c_str());
+    char line[160];
+    std::snprintf(line, sizeof line, "%-17s %7s / %-7s %s", "lab", "points", "max", "tests");
+    print_line(stdout, line);
+    for (const LabResult& lab : result.labs) print_line(stdout, lab_summary_line(lab, Audience::instructor));
+    std::snprintf(line, sizeof line, "%-17s %7s / %-7s", "total", format_points(result.score_cents).c_str(), format_points(result.max_cents).c_str());
+    print_line(stdout, line);
     for (const LabResult& lab : result.labs)
-        for (const std::string& note : lab.notes) std::printf("note: %s: %s\n", lab.lab.c_str(), note.c_str());
-    std::printf("wrote %s and %s\n", (out / "results.json").c_str(), (out / "report.html").c_str());
+        for (const std::string& note : lab.notes) print_line(stdout, "note: " + lab.lab + ": " + note);
+    print_written(out);
+}
+
+// A grader failure: a block of lines (the instructor build's log, say), printed as the terminal may show it.
+void print_failure(const std::string& message) { print_text(stderr, "whitted grade: grader failure: " + message + "\n"); }
+
+// The seconds since `start`.
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 int run_grade(const GradeOptions& options) {
@@ -94,14 +111,17 @@ int run_grade(const GradeOptions& options) {
         !fs::is_regular_file(setup.instructor_tree / "instructor" / "rubric.json"))
         throw UsageError(setup.instructor_tree.string() + " is not an instructor tree (no CMakeLists.txt, solution/ or instructor/rubric.json)");
     const std::vector<std::string> labs = lab_names();
-    const fs::path submission = fs::weakly_canonical(fs::absolute(options.submission));
+    // A submission that is a link is not followed (nor resolved: its folder is the link's).
+    const std::optional<std::string> linked = linked_submission(options.submission);
+    const fs::path submission = linked ? fs::absolute(options.submission).lexically_normal() : fs::weakly_canonical(fs::absolute(options.submission));
     GradingProblem problem;
+    if (linked) problem = {GradingProblem::Kind::submission, *linked};
     try {
-        setup.submission_labs = find_lab_folder(submission, labs);
+        if (!linked) setup.submission_labs = find_lab_folder(submission, labs);
     } catch (const AmbiguousSubmission& error) {
         problem = {GradingProblem::Kind::submission, error.what()};
-        setup.submission_labs = {submission, "", 0};
     }
+    if (!problem.message.empty()) setup.submission_labs = {submission, "", 0};
     setup.out = fs::weakly_canonical(fs::absolute(options.out));
     setup.instructor_build = fs::weakly_canonical(fs::absolute(options.instructor_build));
     check_folder(setup.out, kGradeOutputMarker, "--out", {submission, setup.submission_labs.folder, setup.instructor_tree, setup.instructor_build});
@@ -129,8 +149,9 @@ int run_grade(const GradeOptions& options) {
     // Each line with the seconds since the start: where a grading spends its time.
     if (!options.quiet)
         setup.progress = [start](const std::string& line) {
-            std::fprintf(stderr, "grade: %5.1f s  %s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                         line.c_str());
+            char seconds[32];
+            std::snprintf(seconds, sizeof seconds, "grade: %5.1f s  ", seconds_since(start));
+            print_line(stderr, seconds + line);
         };
 
     GradingResult result;
@@ -139,8 +160,8 @@ int run_grade(const GradeOptions& options) {
         // The student's to fix: results.json says what was found, and nothing is built or run.
         write_file(setup.out / "results.json", results_json(result, problem, options.hidden_visibility));
         write_file(setup.out / "report.html", html_report(result, problem));
-        std::fprintf(stderr, "whitted grade: %s\n", problem.message.c_str());
-        std::printf("wrote %s and %s\n", (setup.out / "results.json").c_str(), (setup.out / "report.html").c_str());
+        print_line(stderr, "whitted grade: " + problem.message);
+        print_written(setup.out);
         return exit_code::bad_input;
     }
     try {
@@ -160,12 +181,15 @@ int run_grade(const GradeOptions& options) {
     }
     write_file(setup.out / "results.json", results_json(result, problem, options.hidden_visibility));
     write_file(setup.out / "report.html", html_report(result, problem));
-    if (!problem.message.empty()) std::fprintf(stderr, "whitted grade: grader failure: %s\n", problem.message.c_str());
+    if (!problem.message.empty()) print_failure(problem.message);
     print_table(result, setup.out);
     // For the instructor only: results.json and report.html are the student's to see.
-    if (!result.fences.empty()) std::printf("student code ran in %s\n", result.fences.c_str());
-    if (!options.quiet)
-        std::fprintf(stderr, "grade: done in %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (!result.fences.empty()) print_line(stdout, "student code ran in " + result.fences);
+    if (!options.quiet) {
+        char done[48];
+        std::snprintf(done, sizeof done, "grade: done in %.1f s", seconds_since(start));
+        print_line(stderr, done);
+    }
     return code;
 }
 
@@ -177,7 +201,7 @@ Command add_grade_command(CLI::App& app) {
                     "that cannot be used, lab files in two places), 3 grader failure (whitted itself failed).");
     command->add_option("submission", options->submission,
                         "The student's submission: the lab files (NN_*.cpp) at its top, in its labs/, or one folder down "
-                        "(my-project/ or my-project/labs/)")
+                        "(my-project/ or my-project/labs/); a folder, not a link to one")
         ->required()
         ->check(CLI::ExistingDirectory);
     command->add_option("--out", options->out, "Folder for results.json, report.html, the copied labs and each test's files (default ./grading)");
@@ -215,13 +239,13 @@ Command add_grade_command(CLI::App& app) {
                        try {
                            return run_grade(*options);
                        } catch (const UsageError& error) {
-                           std::fprintf(stderr, "whitted grade: %s\n", error.what());
+                           print_line(stderr, std::string("whitted grade: ") + error.what());
                            return exit_code::bad_input;
                        } catch (const fs::filesystem_error& error) { // the submission or --out folder, before grading
-                           std::fprintf(stderr, "whitted grade: %s\n", error.what());
+                           print_line(stderr, std::string("whitted grade: ") + error.what());
                            return exit_code::bad_input;
                        } catch (const GraderFailure& error) {
-                           std::fprintf(stderr, "whitted grade: grader failure: %s\n", error.what());
+                           print_failure(error.what());
                            return exit_code::tool_failure;
                        }
                    }};

@@ -200,86 +200,22 @@ public:
             throw GraderFailure("cannot lower the memory ceiling of the student's code's control group for the tests");
     }
 
-    LabResult grade(const LabRubric& lab) {
-        LabResult result;
-        result.lab = lab.lab;
-        result.title = lab.title;
-        TestProgram program{lab.lab, kit_.checkers.at(lab.lab), {(setup_.work / "workers" / ("worker_" + lab.lab)).string()},
-                            setup_.out / "tests" / lab.lab, setup_.test_limits, paths_, sandbox_};
-        setup_.progress("testing " + lab.lab);
-        std::string problem;
-        const std::vector<std::string> names = list_tests(program, problem);
-        if (!problem.empty()) throw GraderFailure("the checker of " + lab.lab + " does not list its tests: " + problem);
-
-        // Why none of the lab's tests can run, if so: missing, refused or not compiled.
-        std::optional<LabFailure> lab_failure;
-        if (const auto refused = refused_.find(lab.lab); refused != refused_.end()) lab_failure = LabFailure{Status::missing, refused->second, ""};
-        else if (const auto failed = failures_.find(lab.lab); failed != failures_.end()) lab_failure = failed->second;
-        if (lab_failure) result.compile_errors = lab_failure->details;
-
-        const LabPlan plan = plan_lab(lab, names);
-        result.notes = plan.notes;
-        result.tests.resize(names.size());
-        // The lab's tests first all in one pair: those that pass there have passed; every other test (image tests
-        // fail there at once) runs on its own below, which tells why it failed. A run that takes longer than
-        // kTogetherSeconds (a hang, or very slow code) counts for nothing and costs no more than that.
-        std::set<std::string> passed_already;
-        if (!lab_failure && seconds_left() >= 1.0) {
-            std::vector<std::string> together;
-            for (std::size_t t = 0; t < names.size(); ++t)
-                if (plan.rule_of_test[t]) together.push_back(names[t]);
-            passed_already = passed_together(program, together, std::min(kTogetherSeconds, seconds_left()));
+    /// Grades every lab's tests in two passes (Pass): every lab's visible tests, then every lab's hidden tests, each
+    /// pass lab by lab in rubric order; the results in rubric order, each lab's tests in listing order.
+    std::vector<LabResult> grade(const Rubric& rubric) {
+        std::vector<LabRun> runs;
+        std::set<std::string> visible, hidden;
+        for (const LabRubric& lab : rubric.labs) {
+            runs.push_back(start(lab));
+            visible.merge(rules_in_pass(lab, runs.back().plan, runs.back().names, Pass::visible));
+            hidden.merge(rules_in_pass(lab, runs.back().plan, runs.back().names, Pass::hidden));
         }
-        // Scores tests t (ran, or not run for `reason`), in order.
-        auto score = [&](std::size_t t, TestOutcome outcome) {
-            const Rule* rule = plan.rule_of_test[t];
-            if (rule && rule->image && outcome.status != Status::passed && outcome.pictures.empty() && !outcome.image)
-                outcome.pictures = fetch_reference_picture(program, names[t]);
-            const long points = score_test(outcome, plan.max_cents[t], rule, setup_.rubric.image_ramp);
-            const bool image = (rule && rule->image) || outcome.image || !outcome.pictures.empty();
-            result.tests[t] = ScoredTest{std::move(outcome), rule ? rule->id : "", plan.max_cents[t], points, image};
-        };
-        // Grades one test, or says why it is not run. One pair at a time: a checker and its worker each want a
-        // core, and two pairs at once on two cores took longer than one after the other (27 s against 21 s).
-        auto grade_test = [&](std::size_t t, const std::optional<std::string>& reason) {
-            // The whole renderer's tests are skipped for a failed prerequisite before its worker's build is blamed.
-            const std::optional<LabFailure> failure = reason && !is_lab(lab.lab) ? std::nullopt : lab_failure;
-            const double left = seconds_left();
-            if (reason || failure) {
-                score(t, not_run(lab.lab, names[t], failure, reason));
-            } else if (passed_already.count(names[t])) {
-                TestOutcome passed;
-                passed.lab = lab.lab;
-                passed.name = names[t];
-                passed.status = Status::passed;
-                score(t, std::move(passed));
-            } else if (left < 0.5) {
-                score(t, not_run(lab.lab, names[t], out_of_budget(), std::nullopt));
-            } else {
-                program.limits.wall_seconds = std::min(setup_.test_limits.wall_seconds, left);
-                score(t, run_test(program, names[t]));
-            }
-        };
-        for (std::size_t r = 0; r < lab.rules.size(); ++r) {
-            const std::optional<std::string> unmet = unmet_prerequisite(lab.rules[r], finished_);
-            std::vector<Failure>& failures = finished_[lab.lab + ":" + lab.rules[r].id];
-            for (std::size_t t = 0; t < names.size(); ++t) {
-                if (plan.rule_of_test[t] != &lab.rules[r]) continue;
-                grade_test(t, unmet);
-                if (result.tests[t].outcome.status != Status::passed) failures.push_back({names[t], result.tests[t].outcome.status});
-            }
-        }
-        for (std::size_t t = 0; t < names.size(); ++t)
-            if (!plan.rule_of_test[t]) grade_test(t, std::nullopt);
-        for (const ScoredTest& test : result.tests) {
-            result.score_cents += test.score_cents;
-            result.max_cents += test.max_cents;
-            if (test.outcome.status != Status::passed) setup_.progress("  " + test.outcome.name + ": " + std::string(status_label(test.outcome.status)));
-        }
-        if (const std::optional<std::string> change = relied_on_.first_change(relied_on_files(setup_, kit_)))
-            throw GraderFailure("while " + lab.lab + " was tested, a file the grader relies on changed: " + *change +
-                                ". Grading stopped so that no grade depends on it; restore the file (git checkout, make build) and grade again.");
-        return result;
+        check_passes(rubric, visible, hidden);
+        for (const Pass pass : {Pass::visible, Pass::hidden})
+            for (LabRun& run : runs) test(run, pass);
+        std::vector<LabResult> results;
+        for (LabRun& run : runs) results.push_back(finish(std::move(run)));
+        return results;
     }
 
 private:
@@ -288,6 +224,104 @@ private:
         std::string message;
         std::string details; // the compiler's first errors
     };
+
+    // One lab across the two passes: its checker and worker, its tests, the rubric's plan for them, and the results.
+    struct LabRun {
+        const LabRubric* lab;
+        TestProgram program;
+        std::vector<std::string> names;    // as the checker lists them
+        LabPlan plan;
+        std::optional<LabFailure> failure; // why none of its tests can run, if so: missing, refused or not compiled
+        LabResult result;                  // tests[t] is names[t]'s, once its pass has graded it
+    };
+
+    // The lab's tests listed by its checker (no student code runs) and planned with the rubric.
+    LabRun start(const LabRubric& lab) {
+        LabRun run{&lab,
+                   TestProgram{lab.lab, kit_.checkers.at(lab.lab), {(setup_.work / "workers" / ("worker_" + lab.lab)).string()},
+                               setup_.out / "tests" / lab.lab, setup_.test_limits, paths_, sandbox_},
+                   {}, {}, std::nullopt, {}};
+        std::string problem;
+        run.names = list_tests(run.program, problem);
+        if (!problem.empty()) throw GraderFailure("the checker of " + lab.lab + " does not list its tests: " + problem);
+        if (const auto refused = refused_.find(lab.lab); refused != refused_.end()) run.failure = LabFailure{Status::missing, refused->second, ""};
+        else if (const auto failed = failures_.find(lab.lab); failed != failures_.end()) run.failure = failed->second;
+        run.plan = plan_lab(lab, run.names);
+        run.result.lab = lab.lab;
+        run.result.title = lab.title;
+        run.result.notes = run.plan.notes;
+        run.result.tests.resize(run.names.size());
+        if (run.failure) run.result.compile_errors = run.failure->details;
+        return run;
+    }
+
+    // Grades the lab's tests of one pass, in pass_order, each after the rules it requires.
+    void test(LabRun& run, Pass pass) {
+        const std::vector<std::size_t> order = pass_order(*run.lab, run.plan, run.names, pass);
+        if (order.empty()) return;
+        setup_.progress("testing " + run.lab->lab + (pass == Pass::hidden ? " (hidden tests)" : ""));
+        const std::set<std::string> passed = run_together(run, order);
+        for (const std::size_t t : order) {
+            const Rule* rule = run.plan.rule_of_test[t];
+            grade_test(run, t, rule ? unmet_prerequisite(*rule, finished_) : std::nullopt, passed);
+            const Status status = run.result.tests[t].outcome.status;
+            if (rule && status != Status::passed) finished_[run.lab->lab + ":" + rule->id].push_back({run.names[t], status});
+        }
+        if (const std::optional<std::string> change = relied_on_.first_change(relied_on_files(setup_, kit_)))
+            throw GraderFailure("while " + run.lab->lab + " was tested, a file the grader relies on changed: " + *change +
+                                ". Grading stopped so that no grade depends on it; restore the file (git checkout, make build) and grade again.");
+    }
+
+    // The pass's tests first all in one pair: the names of those that passed there; every other test (image tests
+    // fail there at once) runs on its own, which tells why it failed. A run that takes longer than kTogetherSeconds
+    // (a hang, or very slow code) counts for nothing and costs no more than that.
+    std::set<std::string> run_together(const LabRun& run, const std::vector<std::size_t>& order) {
+        if (run.failure || seconds_left() < 1.0) return {};
+        std::vector<std::string> together;
+        for (const std::size_t t : order)
+            if (run.plan.rule_of_test[t]) together.push_back(run.names[t]);
+        return passed_together(run.program, together, std::min(kTogetherSeconds, seconds_left()));
+    }
+
+    // Grades test t (passed together already, run on its own, or not run for `reason`). One pair at a time: a checker
+    // and its worker each want a core, and two pairs at once on two cores took longer than one after the other.
+    void grade_test(LabRun& run, std::size_t t, const std::optional<std::string>& reason, const std::set<std::string>& passed) {
+        const std::string& lab = run.lab->lab;
+        // The whole renderer's tests are skipped for a failed prerequisite before its worker's build is blamed.
+        const std::optional<LabFailure> failure = reason && !is_lab(lab) ? std::nullopt : run.failure;
+        const double left = seconds_left();
+        if (reason || failure) return score(run, t, not_run(lab, run.names[t], failure, reason));
+        if (passed.count(run.names[t])) {
+            TestOutcome outcome;
+            outcome.lab = lab;
+            outcome.name = run.names[t];
+            outcome.status = Status::passed;
+            return score(run, t, std::move(outcome));
+        }
+        if (left < 0.5) return score(run, t, not_run(lab, run.names[t], out_of_budget(), std::nullopt));
+        run.program.limits.wall_seconds = std::min(setup_.test_limits.wall_seconds, left);
+        score(run, t, run_test(run.program, run.names[t]));
+    }
+
+    // Scores test t with its outcome (the reference picture fetched for a failed image test that has none).
+    void score(LabRun& run, std::size_t t, TestOutcome outcome) {
+        const Rule* rule = run.plan.rule_of_test[t];
+        if (rule && rule->image && outcome.status != Status::passed && outcome.pictures.empty() && !outcome.image)
+            outcome.pictures = fetch_reference_picture(run.program, run.names[t]);
+        const long points = score_test(outcome, run.plan.max_cents[t], rule, setup_.rubric.image_ramp);
+        const bool image = (rule && rule->image) || outcome.image || !outcome.pictures.empty();
+        run.result.tests[t] = ScoredTest{std::move(outcome), rule ? rule->id : "", run.plan.max_cents[t], points, image};
+    }
+
+    // The lab's result once both passes ran: its points, and each test that did not pass told to the instructor.
+    LabResult finish(LabRun run) {
+        for (const ScoredTest& test : run.result.tests) {
+            run.result.score_cents += test.score_cents;
+            run.result.max_cents += test.max_cents;
+            if (test.outcome.status != Status::passed) setup_.progress("  " + test.outcome.name + ": " + std::string(status_label(test.outcome.status)));
+        }
+        return std::move(run.result);
+    }
 
     using Clock = std::chrono::steady_clock;
 
@@ -360,10 +394,10 @@ GradingResult grade_submission(const GradingSetup& setup) {
     GradingResult result;
     result.fences = grader.prepare().description();
     grader.build_workers(labs);
-    for (const LabRubric& lab : setup.rubric.labs) {
-        result.labs.push_back(grader.grade(lab));
-        result.score_cents += result.labs.back().score_cents;
-        result.max_cents += result.labs.back().max_cents;
+    result.labs = grader.grade(setup.rubric);
+    for (const LabResult& lab : result.labs) {
+        result.score_cents += lab.score_cents;
+        result.max_cents += lab.max_cents;
     }
     return result;
 }

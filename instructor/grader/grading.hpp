@@ -1,7 +1,10 @@
 // Grading one submission: build the student's workers from the grading kit,
-// then lab by lab in rubric order list the checker's tests, run them all in
-// one checker and worker pair, run each that did not pass there in a pair of
-// its own unless a prerequisite failed, and score them with the rubric.
+// list every lab's tests (the checkers alone), then in two passes, every lab's
+// visible tests and then every lab's hidden tests (scoring.hpp's Pass: a
+// hidden test's time cannot decide which visible tests run), lab by lab in
+// rubric order: run the pass's tests all in one checker and worker pair, run
+// each that did not pass there in a pair of its own unless a prerequisite
+// failed, and score them with the rubric.
 #pragma once
 
 #include "process/process_runner.hpp"

@@ -10,9 +10,11 @@
 namespace whitted::grade {
 namespace {
 
+// The text as HTML, control characters and bytes that are not UTF-8 shown as escapes (terminal_text): what the
+// student's code printed and the compiler said may hold any bytes, and the page stays valid UTF-8.
 std::string escape(const std::string& text) {
     std::string out;
-    for (char c : text) {
+    for (char c : terminal_text(text, Newlines::kept)) {
         switch (c) {
         case '&': out += "&amp;"; break;
         case '<': out += "&lt;"; break;

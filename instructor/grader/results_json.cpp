@@ -30,6 +30,26 @@ std::string test_output(const ScoredTest& test) {
     return text;
 }
 
+// JSON escapes C0 but leaves DEL and the C1 controls (U+0080-U+009F) raw: written as \u escapes (the same text), so that
+// results.json shown on a terminal cannot drive it. The dump is valid UTF-8: a 0xc2 byte before 0x80-0x9f is such a control.
+std::string escape_raw_controls(const std::string& json) {
+    std::string text;
+    text.reserve(json.size());
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        const auto c = static_cast<unsigned char>(json[i]);
+        const unsigned next = i + 1 < json.size() ? static_cast<unsigned char>(json[i + 1]) : 0u;
+        if (c != 0x7f && !(c == 0xc2 && next >= 0x80 && next < 0xa0)) {
+            text += json[i];
+            continue;
+        }
+        char escape[8];
+        std::snprintf(escape, sizeof escape, "\\u%04x", c == 0x7f ? 0x7fu : next);
+        text += escape;
+        i += c == 0xc2; // the control's second byte
+    }
+    return text;
+}
+
 } // namespace
 
 std::string status_counts(const LabResult& lab, Audience audience) {
@@ -90,7 +110,7 @@ std::string results_json(const GradingResult& result, const GradingProblem& prob
         }
     }
     // What the student's code printed and the compiler said may hold any bytes: invalid UTF-8 becomes U+FFFD.
-    return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    return escape_raw_controls(root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace)) + "\n";
 }
 
 } // namespace whitted::grade

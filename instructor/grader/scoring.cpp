@@ -84,6 +84,35 @@ LabPlan plan_lab(const LabRubric& lab, const std::vector<std::string>& tests) {
     return plan;
 }
 
+std::vector<std::size_t> pass_order(const LabRubric& lab, const LabPlan& plan, const std::vector<std::string>& tests, Pass pass) {
+    const auto in_pass = [&](std::size_t t) { return is_hidden(tests[t]) == (pass == Pass::hidden); };
+    std::vector<std::size_t> order;
+    for (const Rule& rule : lab.rules)
+        for (std::size_t t = 0; t < tests.size(); ++t)
+            if (plan.rule_of_test[t] == &rule && in_pass(t)) order.push_back(t);
+    for (std::size_t t = 0; t < tests.size(); ++t)
+        if (!plan.rule_of_test[t] && in_pass(t)) order.push_back(t);
+    return order;
+}
+
+std::set<std::string> rules_in_pass(const LabRubric& lab, const LabPlan& plan, const std::vector<std::string>& tests, Pass pass) {
+    std::set<std::string> rules;
+    for (const std::size_t t : pass_order(lab, plan, tests, pass))
+        if (plan.rule_of_test[t]) rules.insert(lab.lab + ":" + plan.rule_of_test[t]->id);
+    return rules;
+}
+
+void check_passes(const Rubric& rubric, const std::set<std::string>& visible, const std::set<std::string>& hidden) {
+    for (const LabRubric& lab : rubric.labs)
+        for (const Rule& rule : lab.rules)
+            for (const std::string& required : rule.requires_rules)
+                if (visible.count(lab.lab + ":" + rule.id) && hidden.count(required))
+                    throw RubricError(rubric.file + ":" + std::to_string(rule.line) + ": rule " + lab.lab + ":" + rule.id +
+                                      " has visible tests and requires " + required +
+                                      ", which has hidden tests: hidden tests run after every visible test (so that their "
+                                      "time cannot decide which visible tests run), and a visible test cannot wait for them");
+}
+
 std::optional<std::string> unmet_prerequisite(const Rule& rule, const RuleFailures& finished) {
     std::string unmet;
     const std::vector<Failure>* first = nullptr;

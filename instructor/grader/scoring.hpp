@@ -7,6 +7,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,29 @@ struct LabPlan {
 
 /// Matches the tests to the lab's rules and shares out the points (in hundredths).
 LabPlan plan_lab(const LabRubric& lab, const std::vector<std::string>& tests);
+
+/// The two passes of a grading: every lab's visible tests, then every lab's
+/// hidden tests (suites named Hidden*). Why: the student's code chooses how
+/// long a hidden test takes, maybe from its hidden inputs; were it run before a
+/// visible test, that time could decide which visible tests the grading's time
+/// budget leaves "not run" (results.json names them), several bits of the hidden
+/// inputs instead of the one bit per hidden test its pass or fail tells. Run
+/// last, a hidden test's time can cut short only other hidden tests, whose
+/// student sees passed or failed.
+enum class Pass { visible, hidden };
+
+/// The lab's tests (indices into `tests`) that run in `pass`, in the order they
+/// run: rule by rule in the rubric's order (each rule's in listing order), then
+/// those no rule matches.
+std::vector<std::size_t> pass_order(const LabRubric& lab, const LabPlan& plan, const std::vector<std::string>& tests, Pass pass);
+
+/// The rules ("lab:id") of the lab that have a test in `pass`.
+std::set<std::string> rules_in_pass(const LabRubric& lab, const LabPlan& plan, const std::vector<std::string>& tests, Pass pass);
+
+/// Throws RubricError ("file:line: ...") when a rule with a visible test
+/// requires a rule with a hidden test: that visible test would have to wait for
+/// the hidden pass. `visible` and `hidden` are rules_in_pass over every lab.
+void check_passes(const Rubric& rubric, const std::set<std::string>& visible, const std::set<std::string>& hidden);
 
 /// A test that did not pass, and how it ended.
 struct Failure {

@@ -96,6 +96,16 @@ LabFolder find_lab_folder(const fs::path& submission, const std::vector<std::str
                               ". Keep one copy of each file, all in one folder, and submit again.");
 }
 
+std::optional<std::string> linked_submission(const fs::path& argument) {
+    std::string path = argument.lexically_normal().string(); // "link/." is "link/"
+    while (path.size() > 1 && path.back() == '/') path.pop_back(); // "link/" would be the folder it leads to
+    std::error_code error;
+    if (!fs::is_symlink(fs::symlink_status(path, error))) return std::nullopt;
+    return fs::path(path).filename().string() +
+           " is a symbolic link, which the grader does not follow (it could lead to any folder of the grading machine): "
+           "grade the folder itself";
+}
+
 std::map<std::string, std::string> copy_lab_files(const LabFolder& from, const fs::path& stubs, const fs::path& to,
                                                   const std::vector<std::string>& labs) {
     fs::remove_all(to);

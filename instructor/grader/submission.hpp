@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,6 +38,13 @@ struct AmbiguousSubmission : std::runtime_error {
 /// __MACOSX are not searched. Throws AmbiguousSubmission when lab files are in
 /// two of these places; returns the top with `files` 0 when there are none.
 LabFolder find_lab_folder(const std::filesystem::path& submission, const std::vector<std::string>& labs);
+
+/// Why the submission, as given on the command line, is not graded: its last
+/// component (after trailing slashes and `.`) is a symbolic link, which could
+/// lead anywhere on the grading machine (the solution, say) and is not followed;
+/// nothing when it is not one. The folders above it are the instructor's
+/// choosing and may be links (a home or /tmp that is one).
+std::optional<std::string> linked_submission(const std::filesystem::path& argument);
 
 /// Copies <from.folder>/<lab>.cpp for every lab into `to` (emptied first); a lab
 /// file that is missing or refused is replaced by the untouched stub from `stubs`.

@@ -51,6 +51,63 @@ std::string trim_text(const std::string& text, std::size_t max_lines, std::size_
     return result;
 }
 
+namespace {
+
+// The length (2 to 4) of the well-formed UTF-8 sequence at text[at] (no overlong form, surrogate or code point past
+// U+10FFFF), or 0 when the bytes there are not one.
+std::size_t utf8_length(std::string_view text, std::size_t at) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[at + k]); };
+    const unsigned char lead = byte(0);
+    const std::size_t length = lead >= 0xc2 && lead <= 0xdf ? 2 : lead >= 0xe0 && lead <= 0xef ? 3 : lead >= 0xf0 && lead <= 0xf4 ? 4 : 0;
+    if (length == 0 || at + length > text.size()) return 0;
+    // The second byte's range: 0x80-0xbf, narrower after the leads whose full range would be overlong or out of Unicode.
+    const unsigned char low = lead == 0xe0 ? 0xa0 : lead == 0xf0 ? 0x90 : 0x80;
+    const unsigned char high = lead == 0xed ? 0x9f : lead == 0xf4 ? 0x8f : 0xbf;
+    if (byte(1) < low || byte(1) > high) return 0;
+    for (std::size_t k = 2; k < length; ++k)
+        if (byte(k) < 0x80 || byte(k) > 0xbf) return 0;
+    return length;
+}
+
+// `\x1b` for a byte, `\u009b` for a C1 code point.
+std::string escaped(const char* prefix, unsigned value, int digits) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%s%0*x", prefix, digits, value);
+    return text;
+}
+
+// Appends what terminal_text shows of the character at text[at]; returns how many bytes it took.
+std::size_t append_shown(std::string& shown, std::string_view text, std::size_t at, Newlines newlines) {
+    const auto c = static_cast<unsigned char>(text[at]);
+    if (c < 0x80) {
+        const bool plain = (c >= 0x20 && c < 0x7f) || c == '\t' || (c == '\n' && newlines == Newlines::kept);
+        shown += plain ? std::string(1, static_cast<char>(c)) : escaped("\\x", c, 2);
+        return 1;
+    }
+    const std::size_t length = utf8_length(text, at);
+    if (length == 0) shown += escaped("\\x", c, 2); // not UTF-8 (a lone 0x9b is CSI to an 8-bit terminal)
+    else if (c == 0xc2 && static_cast<unsigned char>(text[at + 1]) < 0xa0)
+        shown += escaped("\\u", static_cast<unsigned char>(text[at + 1]), 4); // C1: U+0080-U+009F is 0xc2 0x80-0x9f
+    else shown.append(text, at, length);
+    return std::max<std::size_t>(length, 1);
+}
+
+} // namespace
+
+std::string terminal_text(std::string_view text, Newlines newlines) {
+    std::string shown;
+    shown.reserve(text.size());
+    for (std::size_t at = 0; at < text.size();) at += append_shown(shown, text, at, newlines);
+    return shown;
+}
+
+void print_text(std::FILE* stream, std::string_view text) {
+    const std::string shown = terminal_text(text, Newlines::kept);
+    std::fwrite(shown.data(), 1, shown.size(), stream);
+}
+
+void print_line(std::FILE* stream, std::string_view line) { print_text(stream, terminal_text(line) + "\n"); }
+
 std::string format_points(long cents) {
     char text[32];
     std::snprintf(text, sizeof text, "%s%ld.%02ld", cents < 0 ? "-" : "", std::labs(cents) / 100, std::labs(cents) % 100);

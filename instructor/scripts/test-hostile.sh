@@ -31,8 +31,13 @@
 #                 opening a socket, sharing the grader's session (terminal);
 # and once: files (lab files that are links to the solution and to a secret, a
 # FIFO, a folder, an oversized file, #include "/dev/zero"), GoogleTest in the
-# lab files (its exceptions, tests of its own) and a labs/ folder that is a
-# link to the solution.
+# lab files (its exceptions, tests of its own), a labs/ folder that is a link
+# to the solution and a submission that is itself one; and, with a rubric of
+# labs 1 and 2 alone, "terminal": folder names, compiler messages and printing
+# made of terminal control sequences, graded by grade and grade-all, whose
+# bytes on the terminal must hold no control character but newline and tab,
+# the grade with a hidden test's worker sleeping till the budget runs out,
+# which must leave every visible test as it is without the sleep.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 if ! command -v bwrap > /dev/null; then bash scripts/install-deps.sh --sandbox || true; fi
@@ -47,6 +52,44 @@ protected_hash() {
         sort -z | xargs -0 sha256sum | sha256sum | cut -d' ' -f1
 }
 before=$(protected_hash)
+
+# checked NAME WHAT ARGS... < PYTHON: runs the Python (its ok(condition, text) collects problems; ARGS are its
+# sys.argv[1:]) and says "ok NAME: WHAT", or FAIL with the problems.
+checked() {
+    local name=$1 what=$2
+    shift 2
+    if python3 -c 'import sys
+script = sys.argv.pop(1)
+problems = []
+def ok(condition, text):
+    if not condition: problems.append(text)
+exec(script)
+for problem in problems: print("  " + problem)
+sys.exit(1 if problems else 0)' "$(cat)" "$@"; then
+        echo "ok   $name: $what"
+    else
+        echo "FAIL $name: see above"
+        failures=$((failures + 1))
+    fi
+}
+
+# refused_link NAME LINK: the grading NAME refused the submission LINK, a link to the solution: score 0, the reason in
+# results.json and on the terminal, and no file of the solution (by content) in its output folder.
+refused_link() {
+    checked "$1" "a submission that is a link is refused, nothing copied" "$work/$1" "$2" "$solution_dir" <<'EOF'
+import hashlib, json, os
+out, link, solution = sys.argv[1:4]
+def digests(folder):
+    return {hashlib.sha256(open(os.path.join(top, name), "rb").read()).hexdigest(): os.path.join(top, name)
+            for top, _, names in os.walk(folder) for name in names if not os.path.islink(os.path.join(top, name))}
+results = json.load(open(out + "/results.json"))
+ok(results["score"] == 0 and not results["tests"], f"graded: score {results['score']}, {len(results['tests'])} tests")
+ok(link + " is a symbolic link" in results["output"], "results.json does not say why: " + results["output"][:200])
+ok(link + " is a symbolic link" in open(out + ".log", errors="replace").read(), "the terminal does not say why")
+copied = set(digests(out)) & set(digests(solution))
+ok(not copied, "the solution was copied: " + ", ".join(sorted(digests(out)[d] for d in copied)))
+EOF
+}
 
 # hostile NAME CODE...: a copy of the reference with the injected lines.
 hostile() {
@@ -270,6 +313,115 @@ ok(not any("Forged" in t["name"] for t in results["tests"]), "a test the submiss
 grade linked-folder "$work/linked-submission" 1 "${file_options[@]}"
 check linked-folder "$common$secrets"'
 ok(results["score"] == 0, "points for a labs/ folder linked to the solution: " + str(results["score"]))'
+# A submission that is itself a link to the solution: refused (exit 2, a results.json saying why), nothing copied.
+ln -s "$solution_dir" "$work/linked-top-submission"
+grade linked-top "$work/linked-top-submission" 2 "${file_options[@]}"
+refused_link linked-top linked-top-submission
+
+# A rubric of 100 points on labs 1 and 2 alone (the others must be listed: for no points, and a missing lab's tests do
+# not run): the cases below cost a few seconds each.
+cat > "$work/two-labs.json" <<'EOF'
+{ "labs": [
+  { "lab": "01_ray_casting", "title": "Lab 1: ray casting", "rules": [
+    { "id": "unit", "tests": ["*"], "exclude": ["Hidden*", "Lab1Image"], "points": 40 },
+    { "id": "hidden", "tests": ["Hidden*"], "points": 10, "optional": true },
+    { "id": "image", "tests": ["Lab1Image"], "points": 10, "requires": ["unit"], "image": true } ] },
+  { "lab": "02_shadows", "title": "Lab 2: shadows", "rules": [
+    { "id": "unit", "tests": ["*"], "exclude": ["Hidden*", "Lab2Image"], "points": 20 },
+    { "id": "hidden", "tests": ["Hidden*"], "points": 10, "optional": true },
+    { "id": "image", "tests": ["Lab2Image"], "points": 10, "requires": ["unit"], "image": true } ] },
+  { "lab": "03_blinn_phong", "title": "Lab 3", "rules": [ { "id": "unit", "tests": ["*"], "exclude": ["Hidden*"], "points": 0 } ] },
+  { "lab": "04_reflection", "title": "Lab 4", "rules": [ { "id": "unit", "tests": ["*"], "exclude": ["Hidden*"], "points": 0 } ] },
+  { "lab": "05_refraction", "title": "Lab 5", "rules": [ { "id": "unit", "tests": ["*"], "exclude": ["Hidden*"], "points": 0 } ] },
+  { "lab": "06_fresnel", "title": "Lab 6", "rules": [ { "id": "unit", "tests": ["*"], "exclude": ["Hidden*"], "points": 0 } ] },
+  { "lab": "07_anti_aliasing", "title": "Lab 7", "rules": [ { "id": "unit", "tests": ["*"], "exclude": ["Hidden*"], "points": 0 } ] },
+  { "lab": "08_soft_shadows", "title": "Lab 8", "rules": [ { "id": "unit", "tests": ["*"], "exclude": ["Hidden*"], "points": 0 } ] },
+  { "lab": "09_depth_of_field", "title": "Lab 9", "rules": [ { "id": "unit", "tests": ["*"], "exclude": ["Hidden*"], "points": 0 } ] },
+  { "lab": "10_bvh", "title": "Lab 10", "rules": [ { "id": "unit", "tests": ["*"], "exclude": ["Hidden*"], "points": 0 } ] },
+  { "lab": "integration", "title": "Integration", "rules": [ { "id": "all", "tests": ["*"], "points": 0, "requires": ["*:unit"] } ] } ] }
+EOF
+two_labs=(--rubric "$work/two-labs.json" "${file_options[@]:2}")
+
+# The terminal is not the student's: folder names made of control sequences (the window title by OSC 0, the
+# clipboard by OSC 52, a cleared screen with a fake line, CSI as the C1 code point and as a lone byte, a carriage
+# return), the compiler's messages about them (#error, an #include of such a name) and what the code prints in
+# failing tests. grade (without -q: its progress too) and grade-all print none of it raw. The grade is also the case
+# of the budget: a hidden test's worker sleeps (on the camera at (10, 20, 30), an input of HiddenPrimaryRay) till the
+# budget runs out; hidden tests run after every visible test, so each visible test ends as it does without the sleep
+# (passed or failed: none is "not run") and only hidden tests are cut short. The budget is half as long again as
+# grade-all's grading of the same submission without the sleep took (at least 10 s), so that a machine busy with
+# other work still runs every visible test within it.
+esc=$'\e]0;pwned-title\a\e]52;c;aGFja2Vk\a\e[2J\e[Hfull marks 100 of 100\xc2\x9b31m\x9b1m\r'
+student="$work/terminal/student$esc"
+mkdir -p "$student/labs" "$work/terminal-out" "$work/terminal-ambiguous/labs" "$work/terminal-ambiguous/old$esc" "$work/terminal-class"
+cp solution/01_ray_casting.cpp solution/02_shadows.cpp "$student/labs/"
+python3 instructor/scripts/lib/inject.py "$student/labs" 01_ray_casting primary_ray \
+    '#include <cstdio> std::fputs("\x1b]0;pwned-title\x07\x1b]52;c;aGFja2Vk\x07\x1b[2J\x1b[Hfull marks\xc2\x9b" "31m\x9b" "1m\r\n", stdout); return Ray{camera.eye, camera.ze};'
+printf '#error \e]0;pwned-title\a\e[2J\xc2\x9b31m\x9b1m\n#include "\e]52;c;aGFja2Vk\a.h"\n' >> "$student/labs/02_shadows.cpp"
+cp -r "$student" "$work/terminal-class/"
+python3 instructor/scripts/lib/inject.py "$student/labs" 01_ray_casting primary_ray \
+    '#include <chrono> #include <thread> if (camera.eye == Point3(10, 20, 30)) std::this_thread::sleep_for(std::chrono::hours(1));'
+cp solution/01_ray_casting.cpp "$work/terminal-ambiguous/labs/"
+cp solution/01_ray_casting.cpp "$work/terminal-ambiguous/old$esc/"
+ln -s "$solution_dir" "$work/terminal-class/linked$esc"
+ln -s "$solution_dir" "$work/terminal-link$esc"
+echo "not a student" > "$work/terminal-class/file$esc"
+# terminal NAME EXPECTED_EXIT COMMAND...: runs a whitted command, its stdout and stderr in $work/NAME.out and .err,
+# the seconds it took in $seconds.
+terminal() {
+    local name=$1 expected=$2
+    shift 2
+    timed "$name" "$expected" "$work/$name.out" "$work/$name.err" "$whitted" "$@" --jobs "$jobs" "${two_labs[@]}"
+}
+terminal terminal-class 0 grade-all "$work/terminal-class" --csv "$work/terminal-class.csv" --out "$work/terminal-grades" --timeout 2
+budget=$(python3 -c "print(max(10, round(1.5 * $seconds)))")
+terminal terminal-grade 1 grade "$student" --out "$work/terminal-out/student$esc" --budget "$budget"
+terminal terminal-ambiguous 2 grade "$work/terminal-ambiguous" --out "$work/terminal-ambiguous-out"
+terminal terminal-link 2 grade "$work/terminal-link$esc" --out "$work/terminal-link-out"
+checked terminal "no control character of a submission reaches the terminal (grade, grade-all); no budget channel (--budget $budget)" "$work" "$esc" <<'EOF'
+import csv, json, os
+work, esc = sys.argv[1], os.fsencode(sys.argv[2])
+shown = b"\\x1b]0;pwned-title\\x07\\x1b]52;c;aGFja2Vk\\x07\\x1b[2J\\x1b[Hfull marks 100 of 100\\u009b31m\\x9b1m\\x0d"
+def terminal_bytes(name):
+    data = open(f"{work}/{name}.out", "rb").read() + open(f"{work}/{name}.err", "rb").read()
+    for raw in (b"\x1b", b"\x07", b"\x9b", b"\x9d", b"\x7f"): ok(raw not in data, f"{name}: byte {raw!r} on the terminal")
+    try:
+        text = data.decode("utf-8")
+        bad = sorted({hex(ord(c)) for c in text if (ord(c) < 0x20 and c not in "\n\t") or 0x7f <= ord(c) < 0xa0})
+        ok(not bad, f"{name}: control characters on the terminal: {bad}")
+    except UnicodeDecodeError as error:
+        ok(False, f"{name}: not UTF-8 on the terminal at byte {error.start}")
+    return data
+grade = terminal_bytes("terminal-grade")
+ok(b"wrote " in grade and b"student" + shown in grade, "grade: the output folder's name is not shown escaped")
+ok(b"old" + shown + b"/" in terminal_bytes("terminal-ambiguous"), "grade: lab files in two places: the folder is not named escaped")
+ok(b"terminal-link" + shown + b" is a symbolic link" in terminal_bytes("terminal-link"), "grade: the link is not named escaped")
+grade_all = terminal_bytes("terminal-class")
+ok(b"student" + shown + b": " in grade_all, "grade-all: the student is not shown escaped in the progress")
+ok(grade_all.count(b"linked" + shown + b": ") >= 2, "grade-all: the link is not shown escaped in the progress and the summary")
+ok(b"file" + shown in grade_all, "grade-all: the file at the top is not named escaped")
+rows = {os.fsencode(row[0]): row for row in csv.reader(open(f"{work}/terminal-class.csv", newline="", errors="surrogateescape"))}
+ok(rows.get(b"linked" + esc, [""] * 4)[3] == "not_graded", "grade-all: a student folder that is a link is not not_graded")
+ok(0 < float(rows.get(b"student" + esc, ["", "0"])[1] or 0) < 100, "grade-all: the student is not graded")
+# The submission did reach the grader: its printing in results.json (escaped by JSON) and the compiler's message.
+folder = f"{work}/terminal-out/".encode() + b"student" + esc
+raw = open(folder + b"/results.json", "rb").read()
+for byte in (b"\x1b", b"\x07", b"\x7f", b"\xc2\x9b", b"\xc2\x9d"): ok(byte not in raw, f"results.json holds {byte!r} raw")
+tests = json.loads(raw)["tests"]
+lab1 = [t for t in tests if "01_ray_casting" in t["tags"]]
+ok(any("\x1b]0;pwned-title" in t["output"] for t in lab1), "the printing of the failing tests is not in results.json")
+ok(any("pwned-title" in t["output"] and t["extra_data"]["status"] == "compile_error" for t in tests), "the compiler's message is not in results.json")
+html = open(folder + b"/report.html", "rb").read()
+ok(b"\x1b" not in html and b"\\x1b]0;pwned-title" in html, "report.html: the printing is not shown escaped")
+try:
+    html.decode("utf-8")
+except UnicodeDecodeError as error:
+    ok(False, f"report.html is not UTF-8 at byte {error.start}")
+# No budget channel: the visible tests ended as without the sleep, which only cut hidden tests short.
+visible = {t["extra_data"]["status"] for t in lab1 if t["visibility"] != "hidden"}
+ok(visible == {"passed", "failed", "skipped"}, f"the hidden test's time changed the visible tests of lab 1: {sorted(visible)}")
+ok(any(t["visibility"] == "hidden" and t["extra_data"]["status"] == "failed" for t in lab1), "no hidden test was cut short")
+EOF
 chmod "$tree_mode" "$tree"
 
 after=$(protected_hash)

@@ -36,22 +36,28 @@ fi
 failures=0
 summary=()
 
+# timed NAME EXPECTED_EXIT STDOUT STDERR COMMAND...: runs the command, its output in the two files (one file when they
+# are the same), records how long it took in $seconds and $summary, and counts a failure when it exits otherwise.
+timed() {
+    local name=$1 expected=$2 out=$3 err=$4 start status=0
+    shift 4
+    start=$(date +%s.%N)
+    if [ "$out" = "$err" ]; then "$@" > "$out" 2>&1 || status=$?; else "$@" > "$out" 2> "$err" || status=$?; fi
+    seconds=$(python3 -c "print(f'{$(date +%s.%N) - $start:.1f}')")
+    summary+=("$(printf '%-16s %6s s  exit %d' "$name" "$seconds" "$status")")
+    if [ "$status" -ne "$expected" ]; then
+        echo "FAIL $name: exit code $status, expected $expected"
+        cat "$err"
+        failures=$((failures + 1))
+    fi
+}
+
 # grade NAME SUBMISSION EXPECTED_EXIT [options...]: grades into $work/NAME, records the time.
 grade() {
     local name=$1 submission=$2 expected=$3
     shift 3
-    local start end status=0
-    start=$(date +%s.%N)
-    "$whitted" grade "$submission" --out "$work/$name" --jobs "$jobs" -q "${fence_options[@]}" "$@" > "$work/$name.log" 2>&1 || status=$?
-    end=$(date +%s.%N)
-    local seconds
-    seconds=$(python3 -c "print(f'{$end - $start:.1f}')")
-    summary+=("$(printf '%-16s %6s s  exit %d' "$name" "$seconds" "$status")")
-    if [ "$status" -ne "$expected" ]; then
-        echo "FAIL $name: exit code $status, expected $expected"
-        cat "$work/$name.log"
-        failures=$((failures + 1))
-    fi
+    timed "$name" "$expected" "$work/$name.log" "$work/$name.log" \
+        "$whitted" grade "$submission" --out "$work/$name" --jobs "$jobs" -q "${fence_options[@]}" "$@"
 }
 
 # check NAME PYTHON_CONDITIONS: validates results.json and report.html, then the case's own conditions.

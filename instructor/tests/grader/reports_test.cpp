@@ -131,6 +131,31 @@ TEST(ResultsJson, OutputThatIsNotUtf8StillGivesValidJson) {
     EXPECT_FALSE(nlohmann::json::parse(text, nullptr, false).is_discarded()) << text;
 }
 
+// JSON escapes C0 itself; DEL and the C1 controls are escaped too (the same text once parsed), so that results.json
+// shown on a terminal cannot drive it.
+TEST(ResultsJson, NoControlCharacterIsWrittenRaw) {
+    GradingResult result = sample();
+    const std::string printed = "\x1b]0;title\x07 \x7f \xc2\x9b" "2J \xc2\x9d" "52;c;x \xc2\xa0 \xc3\xa9";
+    result.labs[0].tests[1].outcome.name = "SpawnRay.Printed";
+    result.labs[0].tests[1].outcome.output = printed;
+    const std::string text = results_json(result);
+    for (const std::string raw : {"\x1b", "\x07", "\x7f", "\xc2\x9b", "\xc2\x9d"}) EXPECT_EQ(text.find(raw), std::string::npos) << text;
+    EXPECT_NE(text.find("\\u001b]0;title\\u0007 \\u007f \\u009b2J \\u009d52;c;x \xc2\xa0 \xc3\xa9"), std::string::npos) << text;
+    const std::string output = nlohmann::json::parse(text)["tests"][1]["output"];
+    EXPECT_NE(output.find(printed), std::string::npos) << output;
+}
+
+// What the student's code printed may hold control characters and bytes that are not UTF-8: the page shows them as
+// escapes, so it stays valid UTF-8 and the student sees that something odd was printed.
+TEST(HtmlReport, ShowsControlCharactersAndBadBytesAsEscapes) {
+    GradingResult result = sample();
+    result.labs[0].tests[1].outcome.name = "SpawnRay.Printed";
+    result.labs[0].tests[1].outcome.output = "\x1b]0;title\x07 <b> \xff\xc2\x9b";
+    const std::string html = html_report(result);
+    EXPECT_NE(html.find("\\x1b]0;title\\x07 &lt;b&gt; \\xff\\u009b"), std::string::npos);
+    for (const std::string raw : {"\x1b", "\x07", "\xff", "\xc2\x9b"}) EXPECT_EQ(html.find(raw), std::string::npos);
+}
+
 TEST(HtmlReport, ShowsNothingOfAHiddenTestButItsStatus) {
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("reports_test_" + std::to_string(getpid()));
     std::filesystem::create_directories(folder);

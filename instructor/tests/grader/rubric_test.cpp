@@ -172,3 +172,42 @@ TEST(Scoring, FailingImagesEarnPartialCreditOnTheRamp) {
     outcome.status = Status::crash;
     EXPECT_EQ(score_test(outcome, 400, &image, rubric.image_ramp), 0);
 }
+
+// Hidden tests run in a pass of their own after every visible test, so that their time cannot decide which visible
+// tests the budget leaves unrun; within a pass, rule by rule in the rubric's order, unmatched tests last.
+TEST(Scoring, HiddenTestsRunInAPassAfterTheVisibleOnes) {
+    const Rubric rubric = parse_rubric(kValid, "rubric.json", kLabs);
+    const std::vector<std::string> tests = {"HiddenSphere.Far", "Lab1Image.Matches", "Sphere.Hits", "HiddenLab1Image.Matches",
+                                            "Plane.Hits"};
+    const LabPlan plan = plan_lab(rubric.labs[0], tests);
+    EXPECT_EQ(pass_order(rubric.labs[0], plan, tests, Pass::visible), (std::vector<std::size_t>{2, 4, 1}));
+    EXPECT_EQ(pass_order(rubric.labs[0], plan, tests, Pass::hidden), (std::vector<std::size_t>{0, 3}));
+    EXPECT_EQ(rules_in_pass(rubric.labs[0], plan, tests, Pass::visible), (std::set<std::string>{"01_ray_casting:unit", "01_ray_casting:image"}));
+    EXPECT_EQ(rules_in_pass(rubric.labs[0], plan, tests, Pass::hidden), std::set<std::string>{"01_ray_casting:hidden"});
+    // A test no rule matches runs last in its own pass.
+    const std::vector<std::string> integration = {"HiddenOther.Test", "Other.Test", "Integration.Classic"};
+    const LabPlan unmatched = plan_lab(rubric.labs[1], integration);
+    EXPECT_EQ(pass_order(rubric.labs[1], unmatched, integration, Pass::visible), (std::vector<std::size_t>{2, 1}));
+    EXPECT_EQ(pass_order(rubric.labs[1], unmatched, integration, Pass::hidden), std::vector<std::size_t>{0});
+}
+
+// A visible test cannot wait for hidden ones: a rubric whose rule with visible tests requires one with hidden tests is
+// refused, naming the rule; the project's rubric has none.
+TEST(Scoring, AVisibleRuleCannotRequireAHiddenOne) {
+    std::string text = kValid;
+    text.replace(text.find("\"requires\": [\"unit\"]"), 20, "\"requires\": [\"hidden\"]");
+    const Rubric rubric = parse_rubric(text, "rubric.json", kLabs);
+    const std::set<std::string> visible = {"01_ray_casting:unit", "01_ray_casting:image"}, hidden = {"01_ray_casting:hidden"};
+    try {
+        check_passes(rubric, visible, hidden);
+        ADD_FAILURE() << "no error";
+    } catch (const RubricError& error) {
+        EXPECT_EQ(std::string(error.what()).rfind("rubric.json:7: rule 01_ray_casting:image has visible tests and requires "
+                                                  "01_ray_casting:hidden, which has hidden tests",
+                                                  0),
+                  0u)
+            << error.what();
+    }
+    EXPECT_NO_THROW(check_passes(parse_rubric(kValid, "rubric.json", kLabs), visible, hidden));
+    EXPECT_NO_THROW(check_passes(rubric, {"01_ray_casting:unit"}, hidden)) << "the image rule has no visible test here";
+}

@@ -141,3 +141,22 @@ TEST_F(Submission, NoLabFileAnywhereSaysWhereTheGraderLooked) {
     EXPECT_NE(refused.at("01_ray_casting").find("at the top of the submission, in labs/, or one folder down"), std::string::npos)
         << refused.at("01_ray_casting");
 }
+
+// A submission that is itself a link (to the solution, say) is refused, however it is written; a link above it is the
+// instructor's own path and is followed.
+TEST_F(Submission, ASubmissionThatIsALinkIsRefused) {
+    put("real", kLabs);
+    fs::create_directory_symlink(root_ / "real", root_ / "alice");
+    for (const char* written : {"alice", "alice/", "alice//", "alice/.", "./alice"}) {
+        const std::optional<std::string> why = linked_submission(root_ / written);
+        ASSERT_TRUE(why) << written;
+        EXPECT_EQ(*why, "alice is a symbolic link, which the grader does not follow (it could lead to any folder of the grading "
+                        "machine): grade the folder itself")
+            << written;
+    }
+    EXPECT_FALSE(linked_submission(root_ / "real"));
+    EXPECT_FALSE(linked_submission(root_ / "real/"));
+    fs::create_directories(root_ / "real" / "bob");
+    fs::create_directory_symlink(root_ / "real", root_ / "class");
+    EXPECT_FALSE(linked_submission(root_ / "class" / "bob")) << "a link above the submission is the instructor's";
+}
