@@ -19,6 +19,9 @@ TEST(ConcentricDisk, TheCentreOfTheSquareIsTheCentreOfTheDisk) {
     const Vec2 d = concentric_disk(Vec2(0.5, 0.5));
     EXPECT_EQ(d.x, 0.0);
     EXPECT_EQ(d.y, 0.0);
+    // A quarter of the way from it to the right edge, u = (0.625, 0.5): a = (0.25, 0), the right wedge,
+    // r = 0.25 at angle 0: (0.25, 0).
+    expect_vec2(concentric_disk(Vec2(0.625, 0.5)), 0.25, 0.0, "u = (0.625, 0.5)");
 }
 
 TEST(ConcentricDisk, TheMiddlesOfTheSquaresEdgesGoToTheCircle) {
@@ -79,6 +82,11 @@ TEST(ConcentricDisk, EveryPointLiesInTheUnitDisk) {
             const Vec2 d = concentric_disk(Vec2(i / 100.0, j / 100.0));
             ASSERT_LE(glm::length(d), 1.0 + 1e-12) << "u = (" << i / 100.0 << ", " << j / 100.0 << ")";
         }
+    // And the square's border fills the circle: u with a coordinate 0 has |a.x| or |a.y| = 1, so r = 1.
+    for (int k = 0; k <= 100; ++k) {
+        EXPECT_NEAR(glm::length(concentric_disk(Vec2(0.0, k / 100.0))), 1.0, 1e-12) << "u = (0, " << k / 100.0 << ")";
+        EXPECT_NEAR(glm::length(concentric_disk(Vec2(k / 100.0, 0.0))), 1.0, 1e-12) << "u = (" << k / 100.0 << ", 0)";
+    }
 }
 
 TEST(ConcentricDisk, AFractionRSquaredOfTheSquareLandsWithinRadiusR) {
