@@ -18,6 +18,9 @@
 #                 reference images, the rubric, results.json and the checker's
 #                 report, an orphan left sleeping;
 #   hostile-c     vectors and colours right in x with NaN in y and z;
+#   constant-*    every lab function answering the same whatever it is asked
+#                 (instructor/scripts/lib/constant-labs.py: nothing, something,
+#                 passthrough): score 0, every lab 0;
 #   redteam       the untouched stubs with an attack per lab: including the
 #                 solution, forging the checker's report from its command
 #                 line, a main() of its own with fake tests, reading the
@@ -102,6 +105,10 @@ else
     echo "note: not root: no users mode (the student's code would run as the grader's own user)"
 fi
 
+# Lab files whose every function returns a constant, one submission per kind of constant.
+python3 instructor/scripts/lib/constant-labs.py "$work/constant-labs"
+constant_variants=$(python3 instructor/scripts/lib/constant-labs.py --list)
+
 for mode in "${modes[@]}"; do
     options=()
     if [ "$mode" = users ]; then
@@ -166,6 +173,15 @@ lost("04_reflection")
 for t in by_lab["04_reflection"]:
     if t["name"].split(": ")[-1].split(".")[0] in ("MirrorDirection", "HiddenMirrorDirection", "Reflection", "HiddenReflection"):
         ok(t["extra_data"]["status"] != "passed", "a vector with NaN in y and z passed: " + t["name"])'
+
+    # Constant answers earn nothing: every test of a function has a case that no constant answers right.
+    for variant in $constant_variants; do
+        grade "constant-$variant-$mode" "$work/constant-labs/$variant" 1 "${options[@]}" --timeout 2
+        check "constant-$variant-$mode" "$common$mode_line"'
+ok(results["score"] == 0, "points for constant answers: " + str(results["score"]))
+for lab in by_lab:
+    ok(lab_score(lab) == 0, lab + ": " + str(lab_score(lab)) + " points for constant answers: " + ", ".join(t["name"] for t in by_lab[lab] if t["score"] > 0))'
+    done
 
     # The untouched stubs, each with an attack on the grader.
     mkdir -p "$work/redteam-$mode-labs"
