@@ -24,6 +24,7 @@ std::optional<double> box_entry(const Ray& ray, const Vec3& inv_direction, const
 // Start with one leaf holding everything and split nodes in two, along an axis,
 // by the boxes' centres: at the median (simple) or where the surface area
 // heuristic says a ray pays least (the handout explains both).
+// No boxes at all (a scene of planes only): return a tree with no nodes.
 BvhTree build_bvh(std::span<const Aabb> boxes) {
     not_implemented();
 }

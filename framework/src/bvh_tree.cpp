@@ -41,6 +41,10 @@ std::string bvh_tree_error(const BvhTree& tree, std::span<const Aabb> boxes) {
         if (listed[index]) return "primitive " + std::to_string(index) + " is listed twice in order";
         listed[index] = true;
     }
+    // No primitives: no nodes either (a leaf holds at least one primitive, an inner node two subtrees).
+    if (n == 0 && !tree.nodes.empty())
+        return std::to_string(tree.nodes.size()) + (tree.nodes.size() == 1 ? " node" : " nodes") +
+               " for no primitives: a tree over no boxes has no nodes (and an empty order)";
     if (tree.nodes.empty()) return n == 0 ? "" : "no nodes for " + std::to_string(n) + " primitives";
     std::vector<bool> reached(tree.nodes.size(), false), covered(n, false);
     std::vector<std::size_t> stack{0};

@@ -2,6 +2,8 @@
 # Proves that the lab tests test something (instructors and CI):
 #   - the reference solution passes every test (make test does this too);
 #   - every untouched stub fails every test of its own lab, and only of labs that use it;
+#   - lab files whose every function returns a constant (nothing, something, an input handed
+#     back: instructor/scripts/lib/constant-labs.py) fail every test of their lab;
 #   - every catalogued mistake in instructor/tests/mistakes/ is caught by its lab's tests,
 #     and by its public tests alone (a hidden-only catch is a gap in what students can run).
 # Builds in build-proofs/ with -DWHITTED_PROOFS=ON; prints "mistakes caught: N/N".
@@ -15,12 +17,14 @@ cmake --build "$build" -j"$jobs" > "$build.log" 2>&1 || { tail -40 "$build.log";
 
 cd "$build"
 status=0
-ctest -j"$jobs" -L 'stub|independence|mistake' --output-junit proofs.xml > proofs.log 2>&1 || status=1
+ctest -j"$jobs" -L 'stub|independence|mistake|constant' --output-junit proofs.xml > proofs.log 2>&1 || status=1
 count() { grep -cE "$1" proofs.log || true; }
 stub_total=$(count 'Test +#[0-9]+: stub\.')
 stub_failed=$(grep -E 'Test +#[0-9]+: stub\.' proofs.log | grep -cv ' Passed ' || true)
 indep_total=$(count 'Test +#[0-9]+: independence\.')
 indep_failed=$(grep -E 'Test +#[0-9]+: independence\.' proofs.log | grep -cv ' Passed ' || true)
+constant_total=$(count 'Test +#[0-9]+: constant\.')
+constant_failed=$(grep -E 'Test +#[0-9]+: constant\.' proofs.log | grep -cv ' Passed ' || true)
 # missed PREFIX: the tests PREFIX.* that did not pass (a mistake that no test caught).
 missed() { grep -E "Test +#[0-9]+: $1\\." proofs.log | grep -v ' Passed ' | sed -E "s/.*: ($1\\.[^ ]+).*/\\1/" || true; }
 mistakes_total=$(count 'Test +#[0-9]+: mistake\.')
@@ -32,6 +36,7 @@ public_caught=$((public_total - $(printf '%s' "$public_missed" | grep -c . || tr
 
 echo "stub tests that fail as they must: $((stub_total - stub_failed))/$stub_total"
 echo "labs unaffected by later stubs: $((indep_total - indep_failed))/$indep_total"
+echo "constant-answer lab files failing every test of their lab: $((constant_total - constant_failed))/$constant_total"
 echo "mistakes caught: $mistakes_caught/$mistakes_total"
 if [ -n "$mistakes_missed" ]; then
     echo "not caught:"

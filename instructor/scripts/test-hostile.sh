@@ -21,6 +21,9 @@
 #   lab 10 alone  answered through the framework's BVH builder and its box
 #                 primitive, a walk through lab 1's closest_hit() over every
 #                 primitive, a walk that never tests a box: 0 points each;
+#   constant-*    every lab function answering the same whatever it is asked
+#                 (instructor/scripts/lib/constant-labs.py: nothing, something,
+#                 passthrough): score 0, every lab 0;
 #   redteam       the untouched stubs with an attack per lab: including the
 #                 solution, forging the checker's report from its command
 #                 line, a main() of its own with fake tests, reading the
@@ -163,6 +166,10 @@ else
     echo "note: not root: no users mode (the student's code would run as the grader's own user)"
 fi
 
+# Lab files whose every function returns a constant, one submission per kind of constant.
+python3 instructor/scripts/lib/constant-labs.py "$work/constant-labs"
+constant_variants=$(python3 instructor/scripts/lib/constant-labs.py --list)
+
 for mode in "${modes[@]}"; do
     options=()
     if [ "$mode" = users ]; then
@@ -246,6 +253,14 @@ ok(statuses("10_bvh") == {"compile_error"} and shown("10_bvh", "calls whitted::f
 ok(statuses("10_bvh") == {"compile_error"} and shown("10_bvh", "calls whitted::closest_hit("), "the walk through lab 1: " + str(statuses("10_bvh")))'
     check "boxless-walk-$mode" "$lab10_zero"'
 ok(shown("10_bvh", "primitives for these rays, where the framework"), "the walk without boxes: its cost not named")'
+    # Constant answers earn nothing: every test of a function has a case that no constant answers right.
+    for variant in $constant_variants; do
+        grade "constant-$variant-$mode" "$work/constant-labs/$variant" 1 "${options[@]}" --timeout 2
+        check "constant-$variant-$mode" "$common$mode_line"'
+ok(results["score"] == 0, "points for constant answers: " + str(results["score"]))
+for lab in by_lab:
+    ok(lab_score(lab) == 0, lab + ": " + str(lab_score(lab)) + " points for constant answers: " + ", ".join(t["name"] for t in by_lab[lab] if t["score"] > 0))'
+    done
 
     # The untouched stubs, each with an attack on the grader.
     mkdir -p "$work/redteam-$mode-labs"

@@ -56,6 +56,10 @@ TEST(BvhTreeError, EachWayOfBeingWrongIsNamed) {
     tree = two_leaves();
     tree.nodes[0].bounds.max.x = std::nan("");
     EXPECT_NE(bvh_tree_error(tree, kTwo), "") << "a NaN bound contains nothing";
+    // No boxes and a root anyway (a leaf of count 0 is an inner node): the message says what the answer is,
+    // not that the root's children are missing.
+    EXPECT_EQ(bvh_tree_error(BvhTree{{BvhNode{Aabb{}, 0, 0}}, {}}, {}),
+              "1 node for no primitives: a tree over no boxes has no nodes (and an empty order)");
 }
 
 TEST(SahCost, IsTheAreaWeightedCountOfTests) {

@@ -174,6 +174,13 @@ inline Scene scene_of(std::vector<Shape> shapes, Material material, std::vector<
 /// The floor z = 0 facing +z (kUp), so that direction_at(theta) is theta degrees from its normal.
 inline Plane floor_z0() { return Plane{Point3(0.0), kUp}; }
 
+/// Whether `ray` leaves from the hit point in `direction`, as spawn_ray's must: the direction kept and
+/// the origin moved off the point by less than 1e-5 (1 + largest |coordinate| of the point).
+inline bool leaves_from(const Hit& hit, const Vec3& direction, const Ray& ray) {
+    return glm::length(ray.direction - direction) <= 1e-12 &&
+           glm::length(ray.origin - hit.point) < 1e-5 * (1.0 + max_abs_component(hit.point));
+}
+
 /// A smooth surface: scene_of()'s scene whose first primitive is a large flat triangle in the plane z = 0
 /// (geometric normal +z) with all three vertex normals `shading`, so that the framework reports the
 /// shading normal `shading` (hit.normal) and the geometric normal +z (hit.geometric_normal) everywhere on it.

@@ -122,6 +122,7 @@ std::optional<double> box_entry(const Ray& ray, const Vec3& inv_direction, const
 /// index in exactly one leaf, children after their parent, every node's bounds
 /// around everything below it (whitted/bvh_tree.hpp); split so that rays test few
 /// boxes and primitives (the surface area heuristic, or at least the median).
+/// No boxes (a scene of planes only): a tree with no nodes and an empty order.
 BvhTree build_bvh(std::span<const Aabb> boxes);
 /// The nearest hit with t inside t_range among scene.bounded_primitives(),
 /// found by walking scene.lab_bvh() (a leaf's order[i] indexes those primitives).

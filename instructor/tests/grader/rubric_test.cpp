@@ -107,6 +107,27 @@ TEST(Rubric, TheProjectRubricIsValidAndWorthOneHundredPoints) {
     EXPECT_EQ(cents, 10000);
 }
 
+// A lab's pictures, visible and hidden, are graded only once its unit tests pass: a picture made by
+// lab files that answer with constants (which fail every unit test) can come close to the reference
+// (one point light in place of an area light, say) and must not earn partial credit.
+TEST(Rubric, TheProjectRubricGradesEveryPictureOnlyAfterTheUnitTests) {
+    std::vector<std::string> labs = lab_names();
+    labs.push_back("integration");
+    const Rubric rubric = load_rubric(std::string(WHITTED_SOURCE_DIR) + "/instructor/rubric.json", labs);
+    for (const LabRubric& lab : rubric.labs) {
+        if (lab.lab == "integration") continue;
+        int pictures = 0;
+        for (const Rule& rule : lab.rules) {
+            const bool hidden = rule.tests == std::vector<std::string>{"Hidden*"};
+            if (hidden) EXPECT_FALSE(rule.exclude.empty()) << lab.lab << ": the hidden rule must leave the hidden picture to a rule that requires unit";
+            if (!rule.image) continue;
+            ++pictures;
+            EXPECT_EQ(rule.requires_rules, std::vector<std::string>{lab.lab + ":unit"}) << lab.lab << ", rule " << rule.id;
+        }
+        EXPECT_EQ(pictures, 2) << lab.lab << ": its picture and its hidden picture";
+    }
+}
+
 TEST(Rubric, PatternsAreGlobsAndABareSuiteMeansAllItsTests) {
     EXPECT_TRUE(pattern_matches("Sphere", "Sphere.Hits"));
     EXPECT_FALSE(pattern_matches("Sphere", "SphereX.Hits"));

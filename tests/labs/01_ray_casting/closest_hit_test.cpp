@@ -74,6 +74,11 @@ TEST(ClosestHit, EmptySceneAndMissesGiveNothing) {
     EXPECT_FALSE(closest_hit(ray, std::span<const Primitive>{}, {})) << "no primitives, no hit";
     const std::vector<Primitive> behind = {{Sphere{{-5, 0, 0}, 1.0}, 0, -1, 0}, {Sphere{{0, 5, 0}, 1.0}, 0, -1, 1}};
     EXPECT_FALSE(closest_hit(ray, behind, {})) << "one sphere is behind the ray, the other beside it";
+    // Turned around (along -x), the ray meets the sphere around (-5, 0, 0) at x = -4: t = 4.
+    const auto back = closest_hit(make_ray({0, 0, 0}, {-1, 0, 0}), behind, {});
+    ASSERT_TRUE(back) << "along -x the ray runs into the sphere around (-5, 0, 0)";
+    EXPECT_EQ(back->primitive, 0u);
+    EXPECT_NEAR(back->t, 4.0, 1e-12);
 }
 
 TEST(ClosestHit, RespectsTheRangeItIsGiven) {

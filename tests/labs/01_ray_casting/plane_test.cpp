@@ -77,6 +77,10 @@ TEST(IntersectPlane, AlmostParallelRayMeetsThePlaneTenMillionAway) {
 
 TEST(IntersectPlane, ParallelRayIsMissed) {
     EXPECT_FALSE(intersect_plane(make_ray({0, 3, 0}, {1, 0, 0}), kFloor, {})) << "n . d = 0: no intersection";
+    // From the same point turned 45 degrees down, (1, -1, 0) / sqrt 2: it falls 2 to y = 1 at x = 2, t = 2 sqrt 2.
+    const auto down = intersect_plane(make_ray({0, 3, 0}, {1, -1, 0}), kFloor, {});
+    ASSERT_TRUE(down) << "turned down, the ray meets the plane";
+    EXPECT_NEAR(down->t, 2.0 * std::sqrt(2.0), 1e-12);
 }
 
 TEST(IntersectPlane, PlaneBehindTheOriginIsMissed) {
@@ -84,6 +88,11 @@ TEST(IntersectPlane, PlaneBehindTheOriginIsMissed) {
     EXPECT_FALSE(intersect_plane(make_ray({0, 5, 0}, {0, 1, 0}), kFloor, {}))
         << "t = -4 is behind the origin: outside t_range (0, infinity)";
     EXPECT_FALSE(intersect_plane(make_ray({3, 1.5, 0}, {1, 0.2, 0}), kFloor, {}));
+    // Turned around (going down), the first ray has the plane ahead: t = 4, seen from above.
+    const auto ahead = intersect_plane(make_ray({0, 5, 0}, {0, -1, 0}), kFloor, {});
+    ASSERT_TRUE(ahead) << "from (0, 5, 0) going down the plane y = 1 is ahead";
+    EXPECT_NEAR(ahead->t, 4.0, 1e-12);
+    EXPECT_TRUE(ahead->front_face);
 }
 
 TEST(IntersectPlane, RangeLimitsAreOpen) {

@@ -27,6 +27,11 @@ TEST(PrimaryRay, StartsAtTheEyeWithAUnitDirection) {
     EXPECT_TRUE(near(ray.origin, camera.eye)) << "every primary ray starts at the eye";
     EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-15)
         << "ray directions must have length 1 (normalize them): the intersection routines rely on it";
+    // Another pixel, across the image: the same eye, another direction.
+    const Ray other = primary_ray(camera, 32.5, 3.5);
+    EXPECT_TRUE(near(other.origin, camera.eye)) << "every primary ray starts at the eye";
+    EXPECT_NEAR(glm::length(other.direction), 1.0, 1e-15);
+    EXPECT_LT(glm::dot(ray.direction, other.direction), 0.99) << "rays through pixels far apart go different ways";
 }
 
 TEST(PrimaryRay, CentrePixelOfAnOddResolutionLooksExactlyAtTheTarget) {
@@ -36,6 +41,12 @@ TEST(PrimaryRay, CentrePixelOfAnOddResolutionLooksExactlyAtTheTarget) {
     const Ray ray = primary_ray(camera, 2.5, 1.5);
     EXPECT_TRUE(near(ray.direction, {0.6, 0.8, 0}, 1e-15)) << "the centre of the viewport looks straight at `at`";
     EXPECT_TRUE(near(ray.at(camera.df), camera.at, 1e-14)) << "eye + df d should be `at`";
+    // The next pixel to the right, centre (3.5, 1.5), looks one pixel width (w / ResX) along xe from `at`:
+    // its ray meets the view plane (df ahead along -ze) at at + (w / 5) xe.
+    const Ray right = primary_ray(camera, 3.5, 1.5);
+    const double ahead = camera.df / glm::dot(right.direction, -camera.ze);
+    EXPECT_TRUE(near(right.at(ahead), camera.at + (camera.w / 5.0) * camera.xe, 1e-14))
+        << "x one pixel past the centre moves the point on the view plane w / ResX along xe";
 }
 
 TEST(PrimaryRay, BottomLeftPixelCentreGoesDownAndLeft) {
@@ -95,8 +106,11 @@ TEST(Camera, WithResolutionKeepsTheVerticalFovAndWidensTheWidth) {
     EXPECT_NEAR(wide.w, 3.0 * square.h, 1e-12);
     EXPECT_TRUE(near(wide.xe, square.xe, 0.0));
     EXPECT_TRUE(near(wide.ze, square.ze, 0.0));
-    // The centre ray still looks at `at`.
+    // The centre ray still looks at `at`; the left edge at mid height is w / 2 = 1.5 h from it in the view
+    // plane, df away: tan(angle) = 1.5 h / df = 3 tan(20 degrees), three times the square image's.
     EXPECT_TRUE(near(primary_ray(wide, 150.0, 50.0).direction, -square.ze, 1e-15));
+    EXPECT_NEAR(angle_degrees(primary_ray(wide, 0.0, 50.0).direction, -square.ze),
+                std::atan(3.0 * std::tan(radians(20.0))) * 180.0 / kPi, 1e-10);
 }
 
 TEST(PrimaryRay, MovesAlongXeAsXGrowsInWholePixelSteps) {

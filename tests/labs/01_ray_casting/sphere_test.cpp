@@ -44,6 +44,10 @@ TEST(IntersectSphere, RayPassingBesideMisses) {
     EXPECT_FALSE(intersect_sphere(make_ray({1, 4.5, -7}, {0, 0, 1}), kSphere, {}));
     // Diagonal line from (1, 2 - 10, 3 + 10) towards +y only: passes 10 from the centre.
     EXPECT_FALSE(intersect_sphere(make_ray({1, -8, 13}, {0, 1, 0}), kSphere, {}));
+    // Moved in to y = 3.6, the line passes 1.6 from the centre: half chord sqrt(4 - 2.56) = 1.2, t = 10 - 1.2.
+    const auto inside = intersect_sphere(make_ray({1, 3.6, -7}, {0, 0, 1}), kSphere, {});
+    ASSERT_TRUE(inside) << "1.6 from the centre, inside the radius 2: a hit";
+    EXPECT_NEAR(inside->t, 8.8, 1e-12);
 }
 
 TEST(IntersectSphere, RayFromTheCentreHitsTheFarSideFromInside) {
@@ -99,6 +103,11 @@ TEST(IntersectSphere, SphereBehindTheOriginIsNotHit) {
     // Both roots (t = -12 and t = -8) are negative: the sphere lies behind the ray.
     EXPECT_FALSE(intersect_sphere(make_ray({1, 2, 7}, {0, 0, 1}), kSphere, {}))
         << "t must lie inside t_range, whose minimum is 0: hits behind the origin do not count";
+    // Turned around (along -z) the roots are t = 2 and t = 6: the sphere is ahead, its near side at z = 5.
+    const auto ahead = intersect_sphere(make_ray({1, 2, 7}, {0, 0, -1}), kSphere, {});
+    ASSERT_TRUE(ahead) << "along -z the sphere is ahead of the origin";
+    EXPECT_NEAR(ahead->t, 2.0, 1e-12);
+    EXPECT_TRUE(near(ahead->point, {1, 2, 5}));
 }
 
 TEST(IntersectSphere, RangeLimitsAreRespectedAndOpen) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 using namespace whitted;
@@ -66,6 +67,16 @@ TEST(IntersectTriangle, PointsBeyondEachEdgeAreMissed) {
     EXPECT_FALSE(intersect_triangle(ray_up_to(2.9, 3.9), kTriangle, {}))
         << "b1 + b2 > 1: outside the edge p1 p2 (check b1 + b2 <= 1)";
     EXPECT_FALSE(intersect_triangle(ray_up_to(2.5, 2.5), kTriangle, {})) << "b1 = 0.75, b2 = 0.5: b1 + b2 > 1";
+    // Just inside each edge instead, the ray meets the triangle (t = 3): (1.1, 1, 2) has b1 = 0.05,
+    // (2, 1, 1.05) has b2 = 0.05 / 3, (2, 1, 2.35) has b1 + b2 = 0.5 + 0.45 = 0.95.
+    for (const auto& [x, z, b1, b2] : {std::array{1.1, 2.0, 0.05, 1.0 / 3.0}, std::array{2.0, 1.05, 0.5, 0.05 / 3.0},
+                                       std::array{2.0, 2.35, 0.5, 0.45}}) {
+        const auto hit = intersect_triangle(ray_up_to(x, z), kTriangle, {});
+        ASSERT_TRUE(hit) << "(" << x << ", 1, " << z << ") is just inside the triangle";
+        EXPECT_NEAR(hit->t, 3.0, 1e-12);
+        EXPECT_NEAR(hit->uv.x, b1, 1e-12);
+        EXPECT_NEAR(hit->uv.y, b2, 1e-12);
+    }
 }
 
 TEST(IntersectTriangle, EdgeAndVertexPointsCountAsHits) {
@@ -99,6 +110,11 @@ TEST(IntersectTriangle, ParallelRayAndTriangleBehindAreMissed) {
         << "a ray inside the triangle's plane has no single hit";
     EXPECT_FALSE(intersect_triangle(make_ray({1.5, 4, 2.5}, {0, 1, 0}), kTriangle, {}))
         << "the triangle is at t = -3, behind the origin";
+    // Turned around (going down), the ray meets the triangle 3 below, at (1.5, 1, 2.5): b1 = 0.25, b2 = 0.5.
+    const auto ahead = intersect_triangle(make_ray({1.5, 4, 2.5}, {0, -1, 0}), kTriangle, {});
+    ASSERT_TRUE(ahead) << "going down, the triangle is ahead";
+    EXPECT_NEAR(ahead->t, 3.0, 1e-12);
+    EXPECT_NEAR(ahead->uv.x, 0.25, 1e-12);
 }
 
 TEST(IntersectTriangle, RangeLimitsAreOpen) {

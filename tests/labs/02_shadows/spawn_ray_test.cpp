@@ -69,7 +69,7 @@ TEST(SpawnRay, GrazingRaysLeavingASphereDoNotHitItAgain) {
     // Shadow feelers that leave a sphere almost tangentially (89.99 degrees from
     // the normal) must not find the sphere they start on, wherever they start.
     const Sphere sphere{Point3(3.0, -2.0, 7.0), 2.5};
-    int self_hits = 0;
+    int self_hits = 0, elsewhere = 0;
     for (int i = 0; i < 2000; ++i) {
         const double phi = 0.1 + i * 0.0031, theta = 0.2 + i * 0.0017;
         const Vec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
@@ -78,9 +78,12 @@ TEST(SpawnRay, GrazingRaysLeavingASphereDoNotHitItAgain) {
         ASSERT_TRUE(hit.has_value());
         const Vec3 tangent = glm::normalize(glm::cross(n, Vec3(0.3, 0.5, 0.7)));
         const Vec3 grazing = glm::normalize(tangent + std::tan(radians(0.01)) * n);
-        if (intersect_sphere(spawn_ray(*hit, grazing), sphere, Interval{})) ++self_hits;
+        const Ray feeler = spawn_ray(*hit, grazing);
+        if (intersect_sphere(feeler, sphere, Interval{})) ++self_hits;
+        if (!leaves_from(*hit, grazing, feeler)) ++elsewhere;
     }
     EXPECT_EQ(self_hits, 0) << "feelers leaving at 89.99 degrees found the sphere they start on (shadow acne)";
+    EXPECT_EQ(elsewhere, 0) << "feelers that do not start at their hit point (within 1e-5 (1 + |p|)) in its direction";
 }
 
 TEST(SpawnRay, RaysIntoTheSurfaceFindTheFarWallNotTheNearOne) {
@@ -106,13 +109,16 @@ TEST(SpawnRay, GrazingRaysAlongAFarAwayTiltedPlaneDoNotHitIt) {
     const Vec3 normal = glm::normalize(Vec3(0.1, 1.0, 0.3));
     const Plane plane{Point3(1000.1, 1000.3, -999.7), normal};
     const Vec3 tangent = glm::normalize(glm::cross(normal, Vec3(1.0, 0.0, 0.0)));
-    int self_hits = 0;
+    int self_hits = 0, elsewhere = 0;
     for (int i = 0; i < 2000; ++i) {
         const Ray eye{Point3(1000.0 + i * 0.37, 1020.0, -1000.0 - i * 0.11), glm::normalize(Vec3(0.3, -1.0, 0.2 + i * 1e-3))};
         const auto hit = intersect_plane(eye, plane, Interval{});
         ASSERT_TRUE(hit.has_value());
         const Vec3 grazing = glm::normalize(tangent + 1e-7 * hit->normal);
-        if (intersect_plane(spawn_ray(*hit, grazing), plane, Interval{})) ++self_hits;
+        const Ray feeler = spawn_ray(*hit, grazing);
+        if (intersect_plane(feeler, plane, Interval{})) ++self_hits;
+        if (!leaves_from(*hit, grazing, feeler)) ++elsewhere;
     }
     EXPECT_EQ(self_hits, 0) << "far from the origin rounding errors grow: scale the offset with the coordinates";
+    EXPECT_EQ(elsewhere, 0) << "rays that do not start at their hit point (within 1e-5 (1 + |p|)) in its direction";
 }

@@ -24,11 +24,17 @@ TEST(MirrorDirection, StaysOnTheSameSideOfTheSurfaceAsWo) {
     // wo - 2 (wo . n) n, which expects the incoming direction, not wo.
     const Vec3 r = mirror_direction(direction_at(60.0), kUp);
     EXPECT_NEAR(glm::dot(r, kUp), 0.5, 1e-15) << "r must leave the surface on the side of wo and n";
+    // Along the surface it goes the other way: wo leans towards +x (sin 60), r as much towards -x.
+    EXPECT_NEAR(r.x, -std::sin(radians(60.0)), 1e-15) << "r leans away from wo along the surface";
 }
 
 TEST(MirrorDirection, NormalIncidenceReflectsStraightBack) {
-    // wo = n: r = 2 (1) n - n = n.
+    // wo = n: r = 2 (1) n - n = n, for n = +z and for n = (1, 2, 2) / 3.
     EXPECT_TRUE(near(mirror_direction(kUp, kUp), kUp, 1e-15));
+    const Vec3 n = Vec3(1.0, 2.0, 2.0) / 3.0;
+    EXPECT_TRUE(near(mirror_direction(n, n), n, 1e-15));
+    // One degree off the normal, r is one degree off on the other side: (-sin 1, 0, cos 1).
+    EXPECT_TRUE(near(mirror_direction(direction_at(1.0), kUp), Vec3(-std::sin(radians(1.0)), 0.0, std::cos(radians(1.0))), 1e-15));
 }
 
 TEST(MirrorDirection, GrazingIncidenceContinuesAlongTheSurface) {
@@ -67,4 +73,8 @@ TEST(MirrorDirection, ReflectingTwiceGivesWoBack) {
     const Vec3 n = glm::normalize(Vec3(-0.3, 0.8, 0.5));
     const Vec3 wo = glm::normalize(Vec3(0.2, 0.9, -0.1));
     EXPECT_TRUE(near(mirror_direction(mirror_direction(wo, n), n), wo, 1e-14));
+    // Once is not the identity: r - wo = 2 ((wo . n) n - wo), twice the part of wo along the surface,
+    // whose length is sin(theta) = sqrt(1 - (wo . n)^2).
+    const double c = glm::dot(wo, n);
+    EXPECT_NEAR(glm::length(mirror_direction(wo, n) - wo), 2.0 * std::sqrt(1.0 - c * c), 1e-14);
 }

@@ -32,6 +32,17 @@ SceneData facing_mirrors(double ks, Color specular_color = Color(1.0)) {
     return data;
 }
 
+/// A mirror (Kd = 0, Ks = ks) and a red ball (ambient 1, Kd = 1: exactly red) before a blue background.
+Scene mirror_and_red_ball(Shape mirror, double ks, Sphere ball) {
+    SceneData data;
+    data.background = Color(0.0, 0.0, 1.0);
+    data.ambient = Color(1.0);
+    data.materials = {mirror_material(ks), lamp(Color(1.0, 0.0, 0.0))};
+    data.primitives.push_back({std::move(mirror), 0});
+    data.primitives.push_back({ball, 1});
+    return Scene(std::move(data));
+}
+
 } // namespace
 
 TEST(Reflection, WeightIsKsTimesTheSpecularColour) {
@@ -51,13 +62,7 @@ TEST(Reflection, AMirrorShowsWhatLiesInTheMirrorDirection) {
     // Eye ray from (-5, 0, 5) down at 45 degrees hits the mirror z = 0 at the origin;
     // the mirror direction is (1, 0, 1) / sqrt(2), straight at a red ball around
     // (5, 0, 5). The mirror (Kd = 0, Ks = 0.8) shows 0.8 x red; the background is blue.
-    SceneData data;
-    data.background = Color(0.0, 0.0, 1.0);
-    data.ambient = Color(1.0);
-    data.materials = {mirror_material(0.8), lamp(Color(1.0, 0.0, 0.0))};
-    data.primitives.push_back({Plane{Point3(0.0), kUp}, 0});
-    data.primitives.push_back({Sphere{Point3(5.0, 0.0, 5.0), 1.0}, 1});
-    const Scene scene(std::move(data));
+    const Scene scene = mirror_and_red_ball(Plane{Point3(0.0), kUp}, 0.8, Sphere{Point3(5.0, 0.0, 5.0), 1.0});
     const Color seen = trace_one(scene, make_ray(Point3(-5.0, 0.0, 5.0), Vec3(1.0, 0.0, -1.0)), 4);
     EXPECT_TRUE(near(seen, Color(0.8, 0.0, 0.0), 1e-12)) << "the mirror should show the red ball at 0.8";
     // Looking down steeper (wo at 30 degrees), the reflected ray misses the ball: 0.8 x blue.
@@ -152,4 +157,20 @@ TEST(Reflection, UsesTheShadingNormalOfSmoothTriangles) {
     const Scene scene(std::move(data));
     const Color seen = trace_one(scene, Ray{Point3(0.0, 0.0, 5.0), -kUp}, 4);
     EXPECT_TRUE(near(seen, Color(1.0, 0.0, 0.0), 1e-12)) << "reflect about hit.normal, not hit.geometric_normal";
+}
+
+TEST(Reflection, AMirrorSeenFromBehindOrFromInsideReflectsTheSame) {
+    // The mirror plane z = 0 (outward normal +z, Ks = 0.8, Kd = 0) seen from below: the eye ray from
+    // (-5, 0, -5) along (1, 0, 1) / sqrt 2 meets its back face at the origin (front_face false, hit.normal
+    // turned to -z). The mirror direction 2 (wo . n) n - wo = (1, 0, -1) / sqrt 2 goes down to the red
+    // ball around (5, 0, -5): 0.8 x red, as from the front. Planes are two-sided, and so are mirrors.
+    const Scene plane = mirror_and_red_ball(Plane{Point3(0.0), kUp}, 0.8, Sphere{Point3(5.0, 0.0, -5.0), 1.0});
+    EXPECT_TRUE(near(trace_one(plane, make_ray(Point3(-5.0, 0.0, -5.0), Vec3(1.0, 0.0, 1.0)), 4), Color(0.8, 0.0, 0.0), 1e-12))
+        << "the back of the mirror should show the red ball at 0.8";
+    // Inside a mirror ball (radius 1 around the origin, Ks = 0.5): the eye ray from (0.5, 0, 0) along +x
+    // meets the inside of the wall at (1, 0, 0) (front_face false, normal -x) and is sent straight back,
+    // along -x, past its start to a red ball of radius 0.2 around (-0.5, 0, 0): 0.5 x red.
+    const Scene ball = mirror_and_red_ball(Sphere{Point3(0.0), 1.0}, 0.5, Sphere{Point3(-0.5, 0.0, 0.0), 0.2});
+    EXPECT_TRUE(near(trace_one(ball, Ray{Point3(0.5, 0.0, 0.0), Vec3(1.0, 0.0, 0.0)}, 4), Color(0.5, 0.0, 0.0), 1e-12))
+        << "the inside of a mirror ball reflects like its outside: the red ball at 0.5";
 }

@@ -36,6 +36,12 @@ TEST(RefractedDirection, NormalIncidenceGoesStraightThrough) {
     const auto wt = refracted_direction(kUp, kUp, 1.0, 1.5);
     ASSERT_TRUE(wt.has_value());
     EXPECT_TRUE(near(*wt, -kUp, 1e-15));
+    // One degree off the normal the ray bends towards it: sin(theta_t) = sin(1) / 1.5, theta_t = 0.666648 degrees.
+    const auto tilted = refracted_direction(direction_at(1.0), kUp, 1.0, 1.5);
+    ASSERT_TRUE(tilted.has_value());
+    const double sin_t = std::sin(radians(1.0)) / 1.5;
+    EXPECT_TRUE(near(*tilted, Vec3(-sin_t, 0.0, -std::sqrt(1.0 - sin_t * sin_t)), 1e-15))
+        << "at 1 degree from the normal the ray bends to 0.666648 degrees";
 }
 
 TEST(RefractedDirection, LeavingGlassBendsAwayFromTheNormal) {
@@ -58,6 +64,8 @@ TEST(RefractedDirection, IsAUnitVectorOnTheFarSideOfTheSurface) {
             ASSERT_TRUE(wt.has_value());
             EXPECT_NEAR(glm::length(*wt), 1.0, 1e-14) << "wt must be a unit vector";
             EXPECT_LT(glm::dot(*wt, kUp), 0.0) << "wt must go through the surface, against n";
+            EXPECT_NEAR(std::sin(radians(degrees_between(*wt, -kUp))), std::sin(radians(theta)) / eta_t, 1e-9)
+                << "Snell's law: sin(theta_t) = sin(theta_i) / eta_t";
         }
     }
 }
@@ -70,6 +78,8 @@ TEST(RefractedDirection, StaysInThePlaneOfIncidence) {
     ASSERT_TRUE(wt.has_value());
     EXPECT_NEAR(glm::dot(*wt, glm::cross(kUp, wo)), 0.0, 1e-14) << "wt must lie in the plane of wo and n";
     EXPECT_LT(wt->x * wo.x + wt->y * wo.y, 0.0) << "the tangent part of wt must be opposite to wo's";
+    // Its tangent part is sin(theta_t) = sin(50) / 1.5 = 0.510689 long, shorter than wo's: bent towards -n.
+    EXPECT_NEAR(std::hypot(wt->x, wt->y), std::sin(radians(50.0)) / 1.5, 1e-14);
 }
 
 TEST(RefractedDirection, WorksForANormalThatIsNotAnAxis) {
@@ -89,6 +99,10 @@ TEST(RefractedDirection, TotalInternalReflectionGivesNoDirectionJustPastTheCriti
     EXPECT_FALSE(refracted_direction(direction_at(41.82), kUp, 1.5, 1.0).has_value())
         << "past the critical angle there must be no refracted direction (not NaN, not the mirror direction)";
     EXPECT_FALSE(refracted_direction(direction_at(70.0), kUp, 1.5, 1.0).has_value());
+    // Below it, at 40 degrees, the ray gets out: sin(theta_t) = 1.5 sin(40) = 0.964181, theta_t = 74.6186 degrees.
+    const auto out = refracted_direction(direction_at(40.0), kUp, 1.5, 1.0);
+    ASSERT_TRUE(out.has_value()) << "40 degrees is below the critical angle of 41.8103";
+    EXPECT_NEAR(degrees_between(*out, -kUp), 74.6186, 1e-4);
 }
 
 TEST(RefractedDirection, AtExactlyTheCriticalAngleThereIsNoRefractedRay) {
@@ -101,6 +115,11 @@ TEST(RefractedDirection, AtExactlyTheCriticalAngleThereIsNoRefractedRay) {
     ASSERT_EQ(glm::dot(wo, kUp), 0.6);
     EXPECT_FALSE(refracted_direction(wo, kUp, 1.25, 1.0).has_value())
         << "at exactly the critical angle (sin^2 theta_t = 1) there is no refracted direction";
+    // A little steeper, cos(theta_i) = 0.61: sin^2(theta_t) = 1.5625 (1 - 0.3721) = 0.98109375 < 1, so
+    // cos(theta_t) = sqrt(0.01890625) = 0.1375 and the ray gets out close to the surface.
+    const auto out = refracted_direction(Vec3(std::sqrt(1.0 - 0.61 * 0.61), 0.0, 0.61), kUp, 1.25, 1.0);
+    ASSERT_TRUE(out.has_value()) << "cos(theta_i) = 0.61 is inside the critical angle";
+    EXPECT_NEAR(out->z, -0.1375, 1e-12) << "cos(theta_t) = 0.1375";
 }
 
 TEST(RefractedDirection, JustBeforeTheCriticalAngleTheRayLeavesAlmostAlongTheSurface) {

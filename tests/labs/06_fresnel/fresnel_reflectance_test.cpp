@@ -48,6 +48,9 @@ TEST(FresnelReflectance, TotalInternalReflectionReflectsEverything) {
     EXPECT_EQ(kr_at(41.82, 1.5, 1.0), 1.0);
     EXPECT_EQ(kr_at(60.0, 1.5, 1.0), 1.0);
     EXPECT_EQ(kr_at(89.0, 1.5, 1.0), 1.0);
+    // Just inside the critical angle, at 41.80 degrees, much but not all is reflected: cos_t = 0.020064,
+    // Rs = 0.930738, Rp = 0.850806, Kr = 0.890772.
+    EXPECT_NEAR(kr_at(41.80, 1.5, 1.0), 0.890772, 1e-6) << "below the critical angle Kr comes from the equations";
 }
 
 TEST(FresnelReflectance, IsOneAtExactlyTheCriticalAngle) {
@@ -55,6 +58,9 @@ TEST(FresnelReflectance, IsOneAtExactlyTheCriticalAngle) {
     // exactly, lab 5's condition for total internal reflection; the equations
     // agree there (cos_t = 0 gives Rs = 1, Rp = 1), and nothing may be NaN.
     EXPECT_EQ(fresnel_reflectance(0.6, 1.25, 1.0), 1.0);
+    // A little steeper, cos(theta_i) = 0.61: cos_t = 0.1375 (see lab 5), Rs = (0.625 / 0.9)^2 = 0.482253,
+    // Rp = (0.438125 / 0.781875)^2 = 0.313994, Kr = 0.398124.
+    EXPECT_NEAR(fresnel_reflectance(0.61, 1.25, 1.0), 0.398124, 1e-6);
 }
 
 TEST(FresnelReflectance, IsTheSameOnBothSidesAlongTheSamePath) {
@@ -62,24 +68,29 @@ TEST(FresnelReflectance, IsTheSameOnBothSidesAlongTheSamePath) {
     // (theta_t = 28.1255 degrees) reflect the same fraction.
     const double theta_t = std::asin(std::sin(radians(45.0)) / 1.5);
     EXPECT_NEAR(kr_at(45.0, 1.0, 1.5), fresnel_reflectance(std::cos(theta_t), 1.5, 1.0), 1e-12);
+    EXPECT_NEAR(fresnel_reflectance(std::cos(theta_t), 1.5, 1.0), 0.050240, 1e-6) << "both are 0.050240";
 }
 
 TEST(FresnelReflectance, GrazingLightIsAlmostAllReflected) {
     // As theta_i -> 90 degrees cos_i -> 0 and Rs, Rp -> 1.
     EXPECT_GT(fresnel_reflectance(1e-6, 1.0, 1.5), 0.9999);
     EXPECT_LE(fresnel_reflectance(1e-6, 1.0, 1.5), 1.0);
+    // Not yet at 89 degrees: Rs = 0.939472, Rp = 0.868898, Kr = 0.904185.
+    EXPECT_NEAR(kr_at(89.0, 1.0, 1.5), 0.904185, 1e-6);
 }
 
 TEST(FresnelReflectance, GrowsWithTheAngleFromAirIntoGlass) {
     // From air into glass Kr rises from 0.04 to 1 without ever falling (Rp dips to 0
     // at Brewster's angle, but Rs grows faster).
     double previous = kr_at(0.0, 1.0, 1.5);
+    EXPECT_NEAR(previous, 0.04, 1e-12) << "at 0 degrees";
     for (double theta = 1.0; theta < 90.0; theta += 1.0) {
         const double kr = kr_at(theta, 1.0, 1.5);
         EXPECT_GE(kr, previous) << "Kr fell between " << theta - 1.0 << " and " << theta << " degrees";
         EXPECT_LE(kr, 1.0) << "at " << theta << " degrees";
         previous = kr;
     }
+    EXPECT_GT(previous, 0.9) << "at 89 degrees";
 }
 
 TEST(FresnelReflectance, EqualIndicesReflectNothing) {
@@ -88,4 +99,6 @@ TEST(FresnelReflectance, EqualIndicesReflectNothing) {
         EXPECT_NEAR(kr_at(theta, 1.0, 1.0), 0.0, 1e-15) << "air to air at " << theta << " degrees";
         EXPECT_NEAR(kr_at(theta, 1.5, 1.5), 0.0, 1e-15) << "glass to glass at " << theta << " degrees";
     }
+    // Air to glass at those angles reflects 0.04 (0 degrees) to 0.089187 (60 degrees): the indices differ.
+    EXPECT_NEAR(kr_at(60.0, 1.0, 1.5), 0.089187, 1e-6) << "air to glass at 60 degrees";
 }

@@ -4,6 +4,7 @@
 #include "whitted/render.hpp"
 
 #include "lab_helpers.hpp"
+#include "test_helpers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -108,4 +109,9 @@ TEST(PixelColor, ThePictureIsTheSameForAnyThreadCountAndEveryRun) {
     ASSERT_EQ(one.pixels.size(), two.pixels.size());
     EXPECT_EQ(0, std::memcmp(one.pixels.data(), two.pixels.data(), one.pixels.size() * sizeof(Color)));
     EXPECT_EQ(0, std::memcmp(one.pixels.data(), again.pixels.data(), one.pixels.size() * sizeof(Color)));
+    // And it is the scene: the top row (the image's first) sees only the sky, every sample of it the
+    // background (0.2, 0.4, 0.9); the bottom row only the lit floor, another colour.
+    ASSERT_EQ(one.width, 40);
+    EXPECT_TRUE(near(one.at(20, 0), Color(0.2, 0.4, 0.9), 1e-12)) << "a pixel of the sky shows the background";
+    EXPECT_FALSE(near(one.at(20, 29), Color(0.2, 0.4, 0.9), 0.05)) << "a pixel of the floor shows the floor";
 }

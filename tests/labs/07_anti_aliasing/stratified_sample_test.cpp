@@ -42,7 +42,12 @@ TEST(StratifiedSample, ACountThatIsNotASquareUsesTheSquarestGrid) {
 }
 
 TEST(StratifiedSample, OneSampleIsAnywhereInThePixel) {
+    // One sample: a grid of one cell, the whole pixel, so the place is u itself.
     expect_vec2(stratified_sample(0, 1, Vec2(0.3, 0.8)), 0.3, 0.8, "the only sample");
+    // Two samples: 2 x 1 cells, each half the pixel wide: the same u puts sample 0 at (0.3 / 2, 0.8)
+    // and sample 1 at ((1 + 0.3) / 2, 0.8).
+    expect_vec2(stratified_sample(0, 2, Vec2(0.3, 0.8)), 0.15, 0.8, "sample 0 of 2");
+    expect_vec2(stratified_sample(1, 2, Vec2(0.3, 0.8)), 0.65, 0.8, "sample 1 of 2");
 }
 
 TEST(StratifiedSample, EverySampleLiesInItsOwnCellOfThePixel) {

@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 using namespace whitted;
 using namespace whitted::testing_helpers;
@@ -19,6 +21,9 @@ TEST(ConcentricDisk, TheCentreOfTheSquareIsTheCentreOfTheDisk) {
     const Vec2 d = concentric_disk(Vec2(0.5, 0.5));
     EXPECT_EQ(d.x, 0.0);
     EXPECT_EQ(d.y, 0.0);
+    // A quarter of the way from it to the right edge, u = (0.625, 0.5): a = (0.25, 0), the right wedge,
+    // r = 0.25 at angle 0: (0.25, 0).
+    expect_vec2(concentric_disk(Vec2(0.625, 0.5)), 0.25, 0.0, "u = (0.625, 0.5)");
 }
 
 TEST(ConcentricDisk, TheMiddlesOfTheSquaresEdgesGoToTheCircle) {
@@ -79,6 +84,11 @@ TEST(ConcentricDisk, EveryPointLiesInTheUnitDisk) {
             const Vec2 d = concentric_disk(Vec2(i / 100.0, j / 100.0));
             ASSERT_LE(glm::length(d), 1.0 + 1e-12) << "u = (" << i / 100.0 << ", " << j / 100.0 << ")";
         }
+    // And the square's border fills the circle: u with a coordinate 0 has |a.x| or |a.y| = 1, so r = 1.
+    for (int k = 0; k <= 100; ++k) {
+        EXPECT_NEAR(glm::length(concentric_disk(Vec2(0.0, k / 100.0))), 1.0, 1e-12) << "u = (0, " << k / 100.0 << ")";
+        EXPECT_NEAR(glm::length(concentric_disk(Vec2(k / 100.0, 0.0))), 1.0, 1e-12) << "u = (" << k / 100.0 << ", 0)";
+    }
 }
 
 TEST(ConcentricDisk, AFractionRSquaredOfTheSquareLandsWithinRadiusR) {
@@ -87,11 +97,12 @@ TEST(ConcentricDisk, AFractionRSquaredOfTheSquareLandsWithinRadiusR) {
     // 0.01 of r^2 (the grid's own error is below 2 / 400). A map with the radius u.x
     // (the naive polar map) puts a fraction r there: 0.5 instead of 0.25 for r = 1/2.
     constexpr int n = 400;
+    std::vector<double> radii; // each point's distance from the centre, mapped once (a grader's call is not free)
+    radii.reserve(n * n);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) radii.push_back(glm::length(concentric_disk(Vec2((i + 0.5) / n, (j + 0.5) / n))));
     for (double r : {0.25, 0.5, 0.75, 0.9}) {
-        int inside = 0;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j)
-                if (glm::length(concentric_disk(Vec2((i + 0.5) / n, (j + 0.5) / n))) < r) ++inside;
+        const auto inside = std::count_if(radii.begin(), radii.end(), [r](double radius) { return radius < r; });
         EXPECT_NEAR(static_cast<double>(inside) / (n * n), r * r, 0.01) << "within radius " << r;
     }
 }

@@ -99,4 +99,12 @@ TEST(DepthOfFieldEyeRay, OneEyeRayASampleAndThePictureIsTheSameForAnyThreadCount
     EXPECT_EQ(one.stats.eye, 24u * 16u * 4u);
     ASSERT_EQ(one.image.pixels.size(), two.image.pixels.size());
     EXPECT_EQ(0, std::memcmp(one.image.pixels.data(), two.image.pixels.data(), one.image.pixels.size() * sizeof(Color)));
+    // And the picture is the lens's: the wall in focus (as in AnEdgeInTheFocalPlaneStaysSharp) keeps its
+    // edge sharp, so in row 4 (from the bottom; the image's rows start at the top) pixel 2 is black,
+    // pixel 3 half grey and pixel 4 white.
+    const Image sharp = render(wall_through_lens(3.5, 4.0, 10.0), settings, 2).image;
+    ASSERT_EQ(sharp.height, 8);
+    EXPECT_NEAR(sharp.at(2, 3).r, 0.0, 1e-9);
+    EXPECT_NEAR(sharp.at(3, 3).r, 0.5, 1e-9);
+    EXPECT_NEAR(sharp.at(4, 3).r, 1.0, 1e-9);
 }

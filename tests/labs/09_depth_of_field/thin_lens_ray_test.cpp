@@ -44,8 +44,14 @@ TEST(ThinLensRay, EveryLensRayOfAViewportPositionPassesThroughItsFocalPoint) {
 TEST(ThinLensRay, TheDirectionIsAUnitVector) {
     const Camera camera = tilted_lens_camera(0.4, 2.5);
     for (const Vec2& xy : kPositions)
-        for (const Vec2& u : kLensNumbers)
-            EXPECT_NEAR(glm::length(thin_lens_ray(camera, xy.x, xy.y, u).direction), 1.0, 1e-14);
+        for (const Vec2& u : kLensNumbers) {
+            const Ray ray = thin_lens_ray(camera, xy.x, xy.y, u);
+            EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-14);
+            // It is the unit vector from the ray's origin towards its focal point.
+            const Vec3 towards = glm::normalize(focal_point(camera, xy.x, xy.y) - ray.origin);
+            EXPECT_NEAR(glm::length(ray.direction - towards), 0.0, 1e-12)
+                << "viewport (" << xy.x << ", " << xy.y << "), lens numbers (" << u.x << ", " << u.y << ")";
+        }
 }
 
 TEST(ThinLensRay, TheRayStartsOnTheLensDiskAroundTheEye) {
@@ -56,6 +62,9 @@ TEST(ThinLensRay, TheRayStartsOnTheLensDiskAroundTheEye) {
         const Vec3 offset = thin_lens_ray(camera, 20.0, 30.0, u).origin - camera.eye;
         EXPECT_NEAR(glm::dot(offset, camera.ze), 0.0, 1e-14) << "lens numbers (" << u.x << ", " << u.y << ")";
         EXPECT_LE(glm::length(offset), 0.2 + 1e-14) << "lens numbers (" << u.x << ", " << u.y << ")";
+        // Where the handout puts it: eye + (aperture / 2) (d.x xe + d.y ye), d = concentric_disk(u).
+        expect_same_point(camera.eye + offset, expected_lens_point(camera, u), 1e-14,
+                          "lens numbers (" + std::to_string(u.x) + ", " + std::to_string(u.y) + ")");
     }
 }
 

@@ -31,7 +31,10 @@ TEST(HiddenSpawnRay, GrazingRaysLeavingATinyFarAwaySphereDoNotHitIt) {
         const auto hit = intersect_sphere(Ray{sphere.center + 3.0 * n, -n}, sphere, Interval{});
         ASSERT_TRUE(hit.has_value());
         const Vec3 tangent = glm::normalize(glm::cross(n, Vec3(0.6, -0.2, 0.7)));
-        if (intersect_sphere(spawn_ray(*hit, glm::normalize(tangent + 0.01 * n)), sphere, Interval{})) ++self_hits;
+        const Vec3 grazing = glm::normalize(tangent + 0.01 * n);
+        const Ray feeler = spawn_ray(*hit, grazing);
+        if (intersect_sphere(feeler, sphere, Interval{})) ++self_hits;
+        if (!leaves_from(*hit, grazing, feeler)) ++self_hits; // it must start at the hit point, in its direction
     }
     EXPECT_EQ(self_hits, 0);
 }
@@ -66,6 +69,7 @@ TEST(HiddenSpawnRay, RaysThroughAFarAwayTriangleCrossItOnce) {
         const auto hit = intersect_triangle(Ray{target - 30.0 * d, d}, triangle, Interval{});
         ASSERT_TRUE(hit.has_value());
         const Ray through = spawn_ray(*hit, d);
+        if (!leaves_from(*hit, d, through)) ++wrong;
         if (glm::dot(through.origin - hit->point, n) >= 0.0) ++wrong;
         if (intersect_triangle(through, triangle, Interval{})) ++wrong;
         if (intersect_triangle(spawn_ray(*hit, glm::normalize(along + 1e-6 * n)), triangle, Interval{})) ++wrong;
@@ -82,6 +86,9 @@ TEST(HiddenIsLit, LightInsideABoxIsHiddenFromTheFloor) {
     const TestTracer t(scene, 2);
     EXPECT_FALSE(is_lit(t.tracer, surface_hit({3, 0, 0}, {0, 1, 0}), light));
     EXPECT_FALSE(is_lit(t.tracer, surface_hit({0, 0, 0}, {0, 1, 0}), light));
+    // A light over the box at (0, 3, 0) is seen from (3, 0, 0): at x = 1 the feeler is already at height 2.
+    const PointLight above{Point3(0, 3, 0), Color(1.0)};
+    EXPECT_TRUE(is_lit(t.tracer, surface_hit({3, 0, 0}, {0, 1, 0}), above));
 }
 
 TEST(HiddenIsLit, DarkSideOfASphereIsShadowedByTheSphereItself) {
@@ -115,6 +122,11 @@ TEST(HiddenIsLit, LightAMillimetreAboveTheSurfaceIsSeen) {
     const Scene scene = scene_of({Plane{Point3(0.0), Vec3(0, 1, 0)}}, diffuse_material(Color(1.0)), {light});
     const TestTracer t(scene, 2);
     EXPECT_TRUE(is_lit(t.tracer, surface_hit({0.5, 0, -0.25}, {0, 1, 0}), light));
+    // A speck from height 3e-4 to 7e-4 between them hides it.
+    const Scene speck = scene_of({Plane{Point3(0.0), Vec3(0, 1, 0)}, Sphere{Point3(0.5, 5e-4, -0.25), 2e-4}},
+                                 diffuse_material(Color(1.0)), {light});
+    const TestTracer s(speck, 2);
+    EXPECT_FALSE(is_lit(s.tracer, surface_hit({0.5, 0, -0.25}, {0, 1, 0}), light));
 }
 
 TEST(HiddenIsLit, LowWallBlocksAGrazingLight) {

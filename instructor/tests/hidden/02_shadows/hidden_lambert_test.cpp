@@ -63,6 +63,10 @@ TEST(HiddenLambert, ZeroDiffuseWeightIsBlack) {
     const Scene scene = scene_of({floor_z0()}, shiny_material(Color(0.7, 0.8, 0.9), 0.0), {{3.0 * kUp, Color(1.0)}});
     const TestTracer t(scene, 2);
     EXPECT_TRUE(near(lambert(t.tracer, surface_hit(Point3(0.0), kUp)), Color(0.0), 0.0));
+    // With Kd = 0.5 the light straight above (n . L = 1, white) shows half the colour.
+    const Scene half = scene_of({floor_z0()}, shiny_material(Color(0.7, 0.8, 0.9), 0.5), {{3.0 * kUp, Color(1.0)}});
+    const TestTracer h(half, 2);
+    EXPECT_TRUE(near(lambert(h.tracer, surface_hit(Point3(0.0), kUp)), Color(0.35, 0.4, 0.45), 1e-12));
 }
 
 TEST(HiddenLambert, InsideOfAHollowSphereIsLitByALightInside) {

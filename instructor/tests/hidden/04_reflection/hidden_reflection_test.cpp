@@ -34,6 +34,7 @@ TEST(HiddenMirrorDirection, DoesNotDependOnWhichWayTheNormalPoints) {
     const Vec3 n = glm::normalize(Vec3(2.0, -1.0, 2.0));
     const Vec3 wo = glm::normalize(Vec3(1.0, 0.5, 0.3));
     EXPECT_TRUE(near(mirror_direction(wo, n), mirror_direction(wo, -n), 1e-15));
+    EXPECT_TRUE(near(mirror_direction(wo, n), 2.0 * glm::dot(wo, n) * n - wo, 1e-15));
 }
 
 TEST(HiddenReflection, ColouredMirrorFiltersEachChannel) {

@@ -52,6 +52,10 @@ TEST(HiddenRefractedDirection, SameIndexOnBothSidesDoesNotBend) {
     const auto wt = refracted_direction(wo, n, 1.33, 1.33);
     ASSERT_TRUE(wt.has_value());
     EXPECT_TRUE(near(*wt, -wo, 1e-14));
+    // From water into glass (1.33 -> 1.5) the same ray bends: sin(theta_t) = 1.33 / 1.5 sin(theta_i).
+    const auto bent = refracted_direction(wo, n, 1.33, 1.5);
+    ASSERT_TRUE(bent.has_value());
+    EXPECT_NEAR(glm::length(glm::cross(*bent, n)), 1.33 / 1.5 * glm::length(glm::cross(wo, n)), 1e-14);
 }
 
 TEST(HiddenRefractedDirection, WorksForANormalAlongMinusX) {

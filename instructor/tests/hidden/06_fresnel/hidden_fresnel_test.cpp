@@ -53,6 +53,9 @@ TEST(HiddenFresnelReflectance, DiamondIsTheSameOnBothSidesAlongTheSamePath) {
         EXPECT_NEAR(kr_at(theta, 1.0, 2.42), fresnel_reflectance(std::cos(theta_t), 2.42, 1.0), 1e-12)
             << "entering at " << theta << " degrees";
     }
+    // Exact values entering: 0.172411 at 10 degrees, 0.433328 at 80.
+    EXPECT_NEAR(kr_at(10.0, 1.0, 2.42), 0.172411, 1e-6);
+    EXPECT_NEAR(kr_at(80.0, 1.0, 2.42), 0.433328, 1e-6);
 }
 
 namespace {
@@ -97,6 +100,9 @@ TEST(HiddenFresnelBlend, ConservesEnergyForDiamondFromBothSides) {
         const Color c = fresnel_blend(rig.tracer, hit_seen_from(Point3(0.0), kUp, wo), wo, 1);
         EXPECT_NEAR(c.x + c.y, 1.0, 1e-12) << "entering diamond at " << theta << " degrees";
     }
+    // Entering at 5 degrees, Kr = 0.172396 goes up to the red lamp.
+    const Vec3 wo = direction_at(5.0);
+    EXPECT_NEAR(fresnel_blend(rig.tracer, hit_seen_from(Point3(0.0), kUp, wo), wo, 1).x, 0.172396, 1e-6);
 }
 
 TEST(HiddenFresnelBlend, ThePaneOfAWindowLetsThrough92PercentHeadOn) {
