@@ -1,5 +1,6 @@
 // Helpers for the labs' tests: directions at given angles, simple materials,
-// and tracing one ray through a small scene.
+// and tracing one ray through a small scene. (A failing test prints vectors,
+// rays and hits by their fields: printers.hpp, which every test file includes.)
 #pragma once
 
 #include "whitted/labs.hpp"
