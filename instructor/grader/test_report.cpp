@@ -16,6 +16,8 @@ namespace {
 using nlohmann::json;
 
 const std::string kNotImplemented = "is not implemented yet";
+// What a failing test shows of GoogleTest's report (with the test's own output), and of what the student's code printed.
+constexpr std::size_t kReportLines = 40, kPrintedLines = 20;
 
 // A JSON file the checker wrote, read as a regular file of at most 4 MiB without following links or blocking.
 std::optional<json> read_json(const std::filesystem::path& file) {
@@ -114,6 +116,13 @@ void classify_failures(TestOutcome& outcome, const std::vector<std::string>& fai
     }
 }
 
+// The worker's output under its heading, at most kPrintedLines lines of it.
+std::string what_the_code_printed(const ProcessRun& worker, const Limits& limits) {
+    std::string printed = worker.output;
+    if (worker.output_truncated) printed += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
+    return "--- what your code printed ---\n" + first_lines(printed, kPrintedLines);
+}
+
 } // namespace
 
 void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& limits, const std::filesystem::path& report_file) {
@@ -143,7 +152,7 @@ void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& lim
         for (const std::string& failure : *failures) details += failure + "\n";
     details += own_output(run.output, failures.value_or(std::vector<std::string>{}));
     if (run.output_truncated) details += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
-    outcome.output = details;
+    outcome.output = first_lines(details, kReportLines);
 }
 
 void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const ProcessRun& worker, const Limits& limits,
@@ -185,19 +194,17 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
             outcome.status = Status::crash;
             outcome.message = "the checker " + describe(checker, limits);
         }
-        if (!worker.output.empty() || worker.output_truncated) {
-            outcome.output += "--- what your code printed ---\n" + worker.output;
-            if (worker.output_truncated) outcome.output += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
-        }
+        if (!worker.output.empty() || worker.output_truncated) outcome.output += what_the_code_printed(worker, limits);
         return;
     }
     std::string details = link_problem.empty() ? "" : "grading link: " + link_problem + "\n";
     const std::optional<std::vector<std::string>> failures = recorded_failures(report_file, outcome.name);
-    if (failures)
-        for (const std::string& failure : *failures) details += failure + "\n";
-    details += "--- what your code printed ---\n" + worker.output;
-    if (worker.output_truncated) details += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
-    outcome.output = details;
+    if (failures) {
+        std::string reported;
+        for (const std::string& failure : *failures) reported += failure + "\n";
+        details += first_lines(reported, kReportLines);
+    }
+    outcome.output = details + what_the_code_printed(worker, limits);
 }
 
 std::optional<std::map<std::string, bool>> read_test_results(const std::filesystem::path& report_file) {

@@ -10,6 +10,10 @@ TEST(Fake, Passes) { EXPECT_EQ(2 + 2, 4); }
 
 TEST(Fake, GivesAWrongAnswer) { EXPECT_EQ(2 + 2, 5) << "arithmetic is broken"; }
 
+TEST(Fake, FailsEveryInput) { // 6 lines a failure, 3000 in all
+    for (int input = 0; input < 500; ++input) EXPECT_EQ(input, -1) << "input " << input;
+}
+
 TEST(Fake, CallsAStub) { throw std::logic_error("labs/02_shadows.cpp:14: spawn_ray() is not implemented yet"); }
 
 TEST(Fake, ThrowsSomethingElse) { throw std::runtime_error("the scene has no camera"); }
