@@ -157,11 +157,13 @@ void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& lim
 
 void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const ProcessRun& worker, const Limits& limits,
                    const std::filesystem::path& report_file, const std::filesystem::path& link_file) {
-    // What the checker said about the link, when it broke: its own file, not its output (which carries the worker's words).
-    std::string link_problem;
+    // What the checker said about the link, when it broke: its own file, not its output (which carries the worker's words);
+    // its second line names the call to the worker that was in progress ("during box_entry() (labs/10_bvh.cpp)").
+    std::string link_problem, crashed_in;
     try {
         const std::vector<std::string> lines = split_lines(read_regular_file(link_file, 4096));
         if (!lines.empty()) link_problem = lines.front();
+        if (lines.size() > 1 && lines[1].starts_with("during ")) crashed_in = lines[1].substr(7);
     } catch (const std::exception&) {
     }
     if (checker.end == ProcessRun::End::timed_out || worker.end == ProcessRun::End::timed_out) {
@@ -178,7 +180,7 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
         outcome.message = not_implemented_line(worker.output);
     } else if (worker.end == ProcessRun::End::signalled) {
         outcome.status = Status::crash;
-        outcome.message = "your code was " + describe(worker, limits);
+        outcome.message = (crashed_in.empty() ? "your code was " : "your code crashed in " + crashed_in + ": ") + describe(worker, limits);
     } else if (worker.end == ProcessRun::End::failed_to_start) {
         outcome.status = Status::crash;
         outcome.message = "your program " + describe(worker, limits);

@@ -54,6 +54,9 @@ constexpr int kLastOp = static_cast<int>(Op::bvh_occluded);
 int lab_of(Op op);
 /// "blinn_phong()" for Op::blinn_phong, for messages.
 std::string name_of(Op op);
+/// "box_entry() (labs/10_bvh.cpp)": the lab function `op` runs and its file, for a student's
+/// messages (the scene's queries run lab 1's closest_hit()).
+std::string lab_call_name(Op op);
 
 enum class Role {
     checker, // owns scenes and tracers; answers only what the policy allows
@@ -93,6 +96,9 @@ class Link {
     Role role() const { return role_; }
     /// Why the link broke, or empty while it works.
     const std::string& broken() const { return broken_; }
+    /// The innermost call to the other side that was in progress when the link broke, as
+    /// lab_call_name() says it (the checker only: a worker that dies mid-call died in it); empty if none.
+    const std::string& broken_during() const { return broken_during_; }
 
     /// Serves calls until the other side says goodbye or closes the link (the worker's main loop).
     void serve_until_closed();
@@ -131,6 +137,7 @@ class Link {
     LabSet remote_labs_;
     std::recursive_mutex mutex_;
     std::string broken_;
+    std::string broken_during_;
     int depth_ = 0;
     std::uint64_t next_handle_ = 1;
     std::vector<ActiveTracer> active_; // tracers of the calls in progress, innermost last

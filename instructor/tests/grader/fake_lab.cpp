@@ -33,6 +33,14 @@ TEST(Fake, StubThrowsInAThread) {
     worker.join();
 }
 
+// Writes what instructor/link/checker_main.cpp writes when the worker dies while answering box_entry().
+TEST(Fake, WorkerDiesDuringBoxEntry) {
+    const char* report = std::getenv("WHITTED_LINK_REPORT");
+    ASSERT_NE(report, nullptr);
+    std::ofstream(report) << "the other side closed the link\nduring box_entry() (labs/10_bvh.cpp)\n";
+    ADD_FAILURE() << "the link broke";
+}
+
 // Writes what tests/support/image_check.cpp writes for the grader: an image 2 % wrong.
 TEST(FakeImage, IsTwoPercentOff) {
     const char* folder = std::getenv("WHITTED_TEST_OUTPUT");

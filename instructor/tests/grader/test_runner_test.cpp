@@ -36,7 +36,7 @@ TEST_F(TestRunnerTest, ListsEveryTestInOrder) {
     EXPECT_EQ(problem, "");
     const std::vector<std::string> expected = {"Fake.Passes", "Fake.GivesAWrongAnswer", "Fake.FailsEveryInput", "Fake.CallsAStub",
                                                "Fake.ThrowsSomethingElse", "Fake.Segfaults", "Fake.Loops", "Fake.StubThrowsInAThread",
-                                               "FakeImage.IsTwoPercentOff", "HiddenFake.Passes"};
+                                               "Fake.WorkerDiesDuringBoxEntry", "FakeImage.IsTwoPercentOff", "HiddenFake.Passes"};
     EXPECT_EQ(names, expected);
 }
 
@@ -118,6 +118,15 @@ TEST_F(TestRunnerTest, TheWorkersEndingComesFirst) {
     outcome = run_test(program, "Fake.Passes");
     EXPECT_EQ(outcome.status, Status::crash);
     EXPECT_NE(outcome.message.find("went on running after the test was over"), std::string::npos) << outcome.message;
+}
+
+// The checker names the call to the worker that was in progress when the worker died; the crash's message says it.
+TEST_F(TestRunnerTest, ACrashNamesTheLabFunctionThatWasRunning) {
+    program.worker = {MISBEHAVING_CHILD, "segfault"};
+    const TestOutcome outcome = run_test(program, "Fake.WorkerDiesDuringBoxEntry");
+    EXPECT_EQ(outcome.status, Status::crash);
+    EXPECT_EQ(outcome.message.rfind("your code crashed in box_entry() (labs/10_bvh.cpp): killed by SIGSEGV", 0), 0u)
+        << outcome.message;
 }
 
 // A lab's tests run together first; only the passes of a run that ended
