@@ -1,5 +1,6 @@
 #include "whitted/passes.hpp"
 
+#include "lab_call.hpp"
 #include "pass_pictures.hpp"
 #include "whitted/labs.hpp"
 
@@ -68,7 +69,7 @@ Color shadow_pixel(const Tracer& tracer, const Hit& hit) {
     for (const PointLight& light : tracer.lights()) {
         if (glm::dot(hit.normal, light.position - hit.point) <= 0.0) continue;
         ++facing;
-        if (is_lit(tracer, hit, light)) ++lit;
+        if (detail::call_lab("is_lit", is_lit, tracer, hit, light)) ++lit;
     }
     return facing == 0 ? kNotApplicable : Color(static_cast<double>(lit) / facing);
 }
@@ -79,7 +80,7 @@ Color fresnel_pixel(const Scene& scene, const RayNode& eye) {
     if (material.transmittance <= 0.0) return kNotApplicable;
     const double eta_i = hit.front_face ? 1.0 : material.ior;
     const double eta_t = hit.front_face ? material.ior : 1.0;
-    return Color(fresnel_reflectance(glm::dot(-eye.ray.direction, hit.normal), eta_i, eta_t));
+    return Color(detail::call_lab("fresnel_reflectance", fresnel_reflectance, glm::dot(-eye.ray.direction, hit.normal), eta_i, eta_t));
 }
 
 // The pixel's value; depth and cost give raw numbers that finish() turns into colours.

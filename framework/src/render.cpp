@@ -1,5 +1,7 @@
 #include "whitted/render.hpp"
 
+#include "lab_call.hpp"
+
 #include "whitted/engine/tiles.hpp"
 #include "whitted/labs.hpp"
 
@@ -19,7 +21,8 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, int thre
     if (distribution)
         return render_pixels(scene.camera(), threads, progress, [&](RayStats& stats) -> PixelFunction {
             return [tracer = Tracer(scene, settings, stats)](double x, double y) {
-                return pixel_color(tracer, static_cast<int>(x), static_cast<int>(y)); // x, y: the pixel's centre
+                // x, y: the pixel's centre
+                return detail::call_lab("pixel_color", pixel_color, tracer, static_cast<int>(x), static_cast<int>(y));
             };
         });
     // Whitted: blocks of 4 x 4 pixels, whose eye rays and shadow feelers go as packets.

@@ -64,7 +64,9 @@ int run_trace(const TraceOptions& options) {
 
     std::optional<SceneData> side_data;
     if (!options.picture.empty()) side_data = loaded.data;
-    const Scene scene(std::move(loaded.data), linked_leaf_kernels());
+    // The scene as `whitted render` builds it: from lab 10 on, walked with the lab's BVH.
+    const BvhChoice bvh = settings.stage >= stage_number(Stage::bvh) ? BvhChoice::lab : BvhChoice::framework;
+    const Scene scene(std::move(loaded.data), linked_leaf_kernels(), bvh);
 
     // The same pixel as `whitted render` computes: rows go down, the viewport's y goes up.
     RayStats stats;
@@ -91,7 +93,7 @@ int run_trace(const TraceOptions& options) {
         } else {
             SceneData eye_data = *side_data;
             eye_data.camera = eye_data.camera.with_resolution(width * scale, height * scale);
-            eye_view = render(Scene(std::move(eye_data), linked_leaf_kernels()), settings, options.threads).image;
+            eye_view = render(Scene(std::move(eye_data), linked_leaf_kernels(), bvh), settings, options.threads).image;
         }
         side_data->camera = side_camera_for(tree, scene.camera(), width * scale, height * scale);
         const Scene side_scene(std::move(*side_data), linked_leaf_kernels());
