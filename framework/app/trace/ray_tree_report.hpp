@@ -64,7 +64,7 @@ struct MissingRefraction {
 /// above the maximum depth) and none of its children is a refracted ray.
 std::optional<MissingRefraction> check_missing_refraction(const RayTree& tree, int index, const TraceContext& context);
 
-/// True when a blocked shadow feeler was stopped by the very surface it starts on.
+/// True when a blocked shadow feeler was stopped by the very surface it starts on (hits_its_own_surface()).
 bool blocked_by_own_surface(const RayTree& tree, int index, const TraceContext& context);
 
 /// The tree as indented text, with the checks, for the terminal.
