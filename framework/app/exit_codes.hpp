@@ -13,7 +13,7 @@ inline constexpr int negative = 1;
 /// or image that is missing, unreadable or malformed, an output that cannot be written, labs not done yet.
 inline constexpr int bad_input = 2;
 
-/// The tool itself failed: the grader could not grade, or an unexpected internal error.
+/// The tool itself failed: the grader could not grade, an unexpected error, or a crash (whitted/crash_report.hpp).
 inline constexpr int tool_failure = 3;
 
 } // namespace whitted::exit_code

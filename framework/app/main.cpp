@@ -3,6 +3,7 @@
 #include "exit_codes.hpp"
 #include "usage_error.hpp"
 #include "version.hpp"
+#include "whitted/crash_report.hpp"
 #include "whitted/image.hpp"
 #include "whitted/not_implemented.hpp"
 #include "whitted/scene_loader.hpp"
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         return whitted::explain_usage_error(error, commands, argc, argv);
     }
+    whitted::report_crashes(); // a crash in lab code: one line naming the lab function, exit code 3
     try {
         for (const whitted::Command& command : commands)
             if (command.app->parsed()) return command.run();

@@ -1,5 +1,7 @@
 #include "whitted/lab_status.hpp"
 
+#include "lab_call.hpp"
+
 #include "whitted/labs.hpp"
 
 #include <functional>
@@ -77,6 +79,7 @@ std::vector<LabStatus> probe_labs() {
             const auto probe = probes.find(function);
             if (probe == probes.end()) throw std::logic_error("lab_status.cpp has no probe for " + std::string(function));
             try {
+                const detail::LabCall running(probe->first.data()); // the map's keys are string literals
                 probe->second();
             } catch (const NotImplemented& missing) {
                 // Blame the lab the message names: lab 4 may stop in lab 2's spawn_ray.

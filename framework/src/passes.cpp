@@ -1,5 +1,6 @@
 #include "whitted/passes.hpp"
 
+#include "lab_call.hpp"
 #include "pass_pictures.hpp"
 #include "whitted/labs.hpp"
 
@@ -8,6 +9,9 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
 
 namespace whitted {
 namespace {
@@ -49,27 +53,36 @@ Color id_color(std::uint32_t key) {
                  0.25 + 0.75 * (((h >> 16) & 0xff) / 255.0));
 }
 
-// One thread's tracers: one records each pixel's ray tree; the other, which
-// records nothing, casts the shadow pass's feelers (recording them would grow
-// the tree while the pass still reads the eye ray's hit from it).
+// One thread's tracers: one records each pixel's ray tree; the other casts the
+// shadow pass's feelers into a tree of their own (into the first, they would
+// grow it while the pass still reads the eye ray's hit from it).
 struct Probe {
     RayTree tree;
+    RayTree feeler_tree;
     Tracer tracer;
     Tracer feelers;
+    std::uint64_t acne_pixels = 0; // the shadow pass's pixels where a feeler hit the surface it starts from
     // `traced`: how far the tree goes; the feelers see the lights as `settings` ask (area lights sampled from lab 8).
     Probe(const Scene& scene, const RenderSettings& traced, const RenderSettings& settings, RayStats& stats)
-        : tracer(scene, traced, stats, &tree), feelers(scene, settings, stats) {}
+        : tracer(scene, traced, stats, &tree), feelers(scene, settings, stats, &feeler_tree) {}
 };
 
 // At the eye ray's hit: white when every light in front of the surface reaches it, black when none does,
-// and the fraction of the points that reach it in the penumbra of area lights (lab 8).
-Color shadow_pixel(const Tracer& tracer, const Hit& hit) {
+// and the fraction of the points that reach it in the penumbra of area lights (lab 8). Counts the pixel
+// as acne when one of its feelers hit the surface it starts from.
+Color shadow_pixel(const Scene& scene, Probe& probe, const Hit& hit) {
     int facing = 0, lit = 0;
-    for (const PointLight& light : tracer.lights()) {
+    probe.feeler_tree.clear();
+    for (const PointLight& light : probe.feelers.lights()) {
         if (glm::dot(hit.normal, light.position - hit.point) <= 0.0) continue;
         ++facing;
-        if (is_lit(tracer, hit, light)) ++lit;
+        if (detail::call_lab("is_lit", is_lit, probe.feelers, hit, light)) ++lit;
     }
+    for (const RayNode& feeler : probe.feeler_tree.nodes)
+        if (hits_its_own_surface(scene, hit, feeler)) {
+            ++probe.acne_pixels;
+            break;
+        }
     return facing == 0 ? kNotApplicable : Color(static_cast<double>(lit) / facing);
 }
 
@@ -79,11 +92,11 @@ Color fresnel_pixel(const Scene& scene, const RayNode& eye) {
     if (material.transmittance <= 0.0) return kNotApplicable;
     const double eta_i = hit.front_face ? 1.0 : material.ior;
     const double eta_t = hit.front_face ? material.ior : 1.0;
-    return Color(fresnel_reflectance(glm::dot(-eye.ray.direction, hit.normal), eta_i, eta_t));
+    return Color(detail::call_lab("fresnel_reflectance", fresnel_reflectance, glm::dot(-eye.ray.direction, hit.normal), eta_i, eta_t));
 }
 
 // The pixel's value; depth and cost give raw numbers that finish() turns into colours.
-Color pass_pixel(Pass pass, const Scene& scene, const RenderSettings& settings, const Probe& probe) {
+Color pass_pixel(Pass pass, const Scene& scene, const RenderSettings& settings, Probe& probe) {
     const std::vector<RayNode>& nodes = probe.tree.nodes;
     const RayNode& eye = nodes.front();
     switch (pass) {
@@ -120,7 +133,7 @@ Color pass_pixel(Pass pass, const Scene& scene, const RenderSettings& settings, 
     case Pass::shadow:
         // Its own budget for this pixel's feelers (it never runs trace_pixel()), and the eye ray's pixel sample.
         probe.feelers.begin_pixel(probe.tracer.pixel_sample());
-        return shadow_pixel(probe.feelers, hit);
+        return shadow_pixel(scene, probe, hit);
     case Pass::fresnel: return fresnel_pixel(scene, eye);
     case Pass::object_id: {
         const Primitive& primitive = scene.primitives()[hit.primitive];
@@ -149,14 +162,25 @@ PassResult render_pass(const Scene& scene, const RenderSettings& settings, Pass 
     RenderSettings traced = settings;
     if (!whole_tree) traced.stage = stage_number(Stage::ray_casting);
     PassResult result;
+    std::vector<std::shared_ptr<Probe>> probes; // one a thread
+    std::mutex probes_mutex;
     result.render = render_pixels(scene.camera(), threads, progress, [&](RayStats& stats) -> PixelFunction {
         auto probe = std::make_shared<Probe>(scene, traced, settings, stats);
+        const std::lock_guard lock(probes_mutex);
+        probes.push_back(probe);
         return [&scene, &settings, pass, probe](double x, double y) {
             probe->tracer.trace_pixel(x, y);
             return pass_pixel(pass, scene, settings, *probe);
         };
     });
     result.summary = detail::finish_pass(pass, result.render.image);
+    if (pass == Pass::shadow) {
+        std::uint64_t acne = 0;
+        for (const std::shared_ptr<Probe>& probe : probes) acne += probe->acne_pixels;
+        result.summary += acne == 0 ? "; no shadow feeler hit the surface it starts from"
+                                    : "; at " + std::to_string(acne) + " pixels a shadow feeler hit the very surface it "
+                                      "starts from: shadow acne (lab 2, spawn_ray())";
+    }
     return result;
 }
 

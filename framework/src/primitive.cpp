@@ -3,6 +3,8 @@
 #include "whitted/primitive.hpp"
 #include "whitted/primitive_test_count.hpp"
 
+#include "lab_call.hpp"
+
 #include <type_traits>
 
 namespace whitted {
@@ -25,9 +27,10 @@ std::optional<Hit> intersect(const Ray& ray, const Primitive& primitive, Interva
     std::optional<Hit> hit = std::visit(
         [&](const auto& shape) -> std::optional<Hit> {
             using T = std::decay_t<decltype(shape)>;
-            if constexpr (std::is_same_v<T, Sphere>) return intersect_sphere(ray, shape, t_range);
-            else if constexpr (std::is_same_v<T, Plane>) return intersect_plane(ray, shape, t_range);
-            else if constexpr (std::is_same_v<T, Triangle>) return intersect_triangle(ray, shape, t_range);
+            using detail::call_lab;
+            if constexpr (std::is_same_v<T, Sphere>) return call_lab("intersect_sphere", intersect_sphere, ray, shape, t_range);
+            else if constexpr (std::is_same_v<T, Plane>) return call_lab("intersect_plane", intersect_plane, ray, shape, t_range);
+            else if constexpr (std::is_same_v<T, Triangle>) return call_lab("intersect_triangle", intersect_triangle, ray, shape, t_range);
             else return intersect_framework_shape(ray, shape, t_range);
         },
         primitive.shape);

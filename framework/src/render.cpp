@@ -1,5 +1,7 @@
 #include "whitted/render.hpp"
 
+#include "lab_call.hpp"
+
 #include "whitted/engine/tiles.hpp"
 #include "whitted/labs.hpp"
 
@@ -11,6 +13,15 @@
 
 namespace whitted {
 
+Color sampled_pixel_color(const Tracer& tracer, int x, int y) {
+    return detail::call_lab("pixel_color", pixel_color, tracer, x, y);
+}
+
+Vec2 sample_position(const PixelSample& sample, int count) {
+    const Vec2 numbers = sample_numbers(sample, SampleUse::pixel);
+    return Vec2(sample.x, sample.y) + detail::call_lab("stratified_sample", stratified_sample, sample.index, count, numbers);
+}
+
 RenderResult render(const Scene& scene, const RenderSettings& settings, int threads,
                     const ProgressCallback& progress) {
     // Whitted ray tracing: one ray through each pixel centre. Distribution ray
@@ -19,7 +30,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, int thre
     if (distribution)
         return render_pixels(scene.camera(), threads, progress, [&](RayStats& stats) -> PixelFunction {
             return [tracer = Tracer(scene, settings, stats)](double x, double y) {
-                return pixel_color(tracer, static_cast<int>(x), static_cast<int>(y)); // x, y: the pixel's centre
+                return sampled_pixel_color(tracer, static_cast<int>(x), static_cast<int>(y)); // x, y: the pixel's centre
             };
         });
     // Whitted: blocks of 4 x 4 pixels, whose eye rays and shadow feelers go as packets.

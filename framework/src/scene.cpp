@@ -7,6 +7,7 @@
 #include "whitted/engine/wide_bvh.hpp"
 #include "whitted/labs.hpp"
 
+#include "lab_call.hpp"
 #include "permute.hpp"
 #include "prefault.hpp"
 
@@ -123,13 +124,24 @@ Scene::Scene(SceneData data, const LeafKernels* kernels, BvhChoice bvh, BvhBuild
     }
 }
 
+namespace {
+
+// Lab 1's closest_hit(), marked as running for the crash report.
+std::optional<Hit> labs_closest_hit(const Ray& ray, std::span<const Primitive> primitives, Interval t_range) {
+    return detail::call_lab("closest_hit", closest_hit, ray, primitives, t_range);
+}
+
+} // namespace
+
 std::size_t Scene::acceleration_bytes() const { return grid_ ? grid_->bytes() : bvh_ ? bvh_->bytes() : 0; }
 
 const BvhTree& Scene::lab_bvh() const {
     // A build that throws (not written yet) leaves the flag unset: the next call tries again.
     std::call_once(lab_bvh_->built, [this] {
         const std::vector<Aabb> boxes = primitive_boxes(bounded_primitives());
-        BvhTree tree = remote_ && remote_->lab_bvh ? remote_->lab_bvh(*this) : (lab_builder_ ? lab_builder_ : build_bvh)(boxes);
+        BvhTree tree = remote_ && remote_->lab_bvh ? remote_->lab_bvh(*this)
+                       : lab_builder_                  ? lab_builder_(boxes)
+                                                       : detail::call_lab("build_bvh", build_bvh, boxes);
         if (const std::string error = bvh_tree_error(tree, boxes); !error.empty())
             throw std::runtime_error("build_bvh() made a tree that is not a hierarchy over the scene's " +
                                      std::to_string(boxes.size()) + " bounded primitives: " + error);
@@ -152,12 +164,12 @@ void Scene::apply_vertex_normals(Hit& hit, const Ray& ray) const {
 std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     const std::span<const Primitive> all = data_.primitives;
     if (data_.acceleration == Acceleration::none) { // every primitive, one after the other: the slow way, on purpose
-        std::optional<Hit> nearest = whitted::closest_hit(ray, all, t_range);
+        std::optional<Hit> nearest = labs_closest_hit(ray, all, t_range);
         if (nearest) apply_vertex_normals(*nearest, ray);
         return nearest;
     }
     if (grid_) { // the planes, then the grid's cells along the ray
-        std::optional<Hit> nearest = whitted::closest_hit(ray, all.subspan(bounded_count_), t_range);
+        std::optional<Hit> nearest = labs_closest_hit(ray, all.subspan(bounded_count_), t_range);
         if (nearest) t_range.max = nearest->t;
         if (std::optional<Hit> hit = grid_->closest_hit(ray, bounded_primitives(), t_range)) nearest = hit;
         if (nearest) apply_vertex_normals(*nearest, ray);
@@ -167,10 +179,10 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     if (remote_) [[unlikely]]
         return remote_->closest_hit(*this, ray, t_range);
     // Infinite planes first: a plane hit shortens the range the BVH must search.
-    std::optional<Hit> nearest = whitted::closest_hit(ray, all.subspan(bounded_count_), t_range);
+    std::optional<Hit> nearest = labs_closest_hit(ray, all.subspan(bounded_count_), t_range);
     if (nearest) t_range.max = nearest->t;
     if (walks_lab_bvh()) {
-        if (std::optional<Hit> hit = bvh_closest_hit(*this, ray, t_range)) nearest = hit;
+        if (std::optional<Hit> hit = detail::call_lab("bvh_closest_hit", bvh_closest_hit, *this, ray, t_range)) nearest = hit;
         if (nearest) apply_vertex_normals(*nearest, ray);
         return nearest;
     }
@@ -182,7 +194,7 @@ std::optional<Hit> Scene::closest_hit(const Ray& ray, Interval t_range) const {
     bvh_->traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
         const bool lower = in_bvh && first < nearest->primitive; // leaves hold consecutive indices
         const Interval range{t_range.min, lower ? std::nextafter(t_max, kInfinity) : t_max};
-        if (auto hit = whitted::closest_hit(ray, all.subspan(first, count), range)) {
+        if (auto hit = labs_closest_hit(ray, all.subspan(first, count), range)) {
             nearest = hit;
             in_bvh = true;
             return hit->t;
@@ -224,7 +236,7 @@ bool Scene::occluded(const Ray& ray, Interval t_range, std::uint32_t& blocker) c
     for (const Primitive& plane : all.subspan(bounded_count_)) {
         if (intersect(ray, plane, t_range)) return true;
     }
-    if (walks_lab_bvh()) return bvh_occluded(*this, ray, t_range);
+    if (walks_lab_bvh()) return detail::call_lab("bvh_occluded", bvh_occluded, *this, ray, t_range);
     bool blocked = false;
     bvh_->traverse(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
         for (const Primitive& primitive : all.subspan(first, count)) {
@@ -261,10 +273,10 @@ QueryCost Scene::query_cost(const Ray& ray, Interval t_range, bool any_hit) cons
         }, nodes);
     } else {
         cost.primitive_tests = planes.size();
-        if (const std::optional<Hit> hit = whitted::closest_hit(ray, planes, t_range)) t_range.max = hit->t;
+        if (const std::optional<Hit> hit = labs_closest_hit(ray, planes, t_range)) t_range.max = hit->t;
         bvh_->traverse_counting(ray, t_range.min, t_range.max, [&](std::uint32_t first, std::uint32_t count, double t_max) {
             cost.primitive_tests += count;
-            const std::optional<Hit> hit = whitted::closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max});
+            const std::optional<Hit> hit = labs_closest_hit(ray, all.subspan(first, count), Interval{t_range.min, t_max});
             return hit ? hit->t : t_max;
         }, nodes);
     }

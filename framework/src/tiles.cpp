@@ -1,5 +1,7 @@
 #include "whitted/engine/tiles.hpp"
 
+#include "lab_call.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -94,6 +96,7 @@ int for_each_tile(int width, int height, int threads, const std::function<TileFu
     std::mutex failure_mutex;
     const ThreadPlacement placement(threads);
     auto worker = [&](int thread_index) {
+        const detail::CrashReportStack crash_report_stack; // lab code runs here: a crash must be reported, an overflow too
         try {
             const TileFunction per_tile = for_thread(thread_index);
             for (int index = next_tile++; index < tiles; index = next_tile++) {

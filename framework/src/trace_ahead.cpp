@@ -19,6 +19,7 @@
 // pixels part ways, and looking ahead for them (measured with reflections,
 // refractions and their feelers down to depth 5) cost more than their packets
 // saved: 15-19 % slower on balls4, flake5 and mount6, 1 % faster on teapot6.
+#include "lab_call.hpp"
 #include "tracer_engine.hpp"
 
 #include "whitted/labs.hpp"
@@ -140,7 +141,10 @@ void Tracer::trace_pixels(std::span<const Vec2> positions, std::span<Color> colo
     // Each eye ray made in its place: a Ray returned and then copied is read back
     // in 16-byte pieces from 8-byte stores, which stalls on every ray.
     s.rays.resize(count);
-    for (std::size_t i = 0; i < count; ++i) ::new (&s.rays[i]) Ray(primary_ray(camera, positions[i].x, positions[i].y));
+    {
+        const detail::LabCall running("primary_ray");
+        for (std::size_t i = 0; i < count; ++i) ::new (&s.rays[i]) Ray(primary_ray(camera, positions[i].x, positions[i].y));
+    }
     s.ranges.assign(count, Interval{});
     s.hits.assign(count, std::nullopt);
     e.scene.closest_hits(s.rays, s.ranges, s.hits);

@@ -1,5 +1,6 @@
 #include "whitted/tracer.hpp"
 
+#include "lab_call.hpp"
 #include "tracer_engine.hpp"
 #include "whitted/labs.hpp"
 
@@ -74,7 +75,7 @@ std::span<const PointLight> Tracer::lights() const {
             lights.push_back(PointLight{light.center, light.color});
             continue;
         }
-        const std::vector<PointLight> points = light_samples(*this, light);
+        const std::vector<PointLight> points = detail::call_lab("light_samples", light_samples, *this, light);
         lights.insert(lights.end(), points.begin(), points.end());
     }
     e.lights = std::move(lights);
@@ -139,14 +140,18 @@ Color Tracer::Engine::shade(const Tracer& tracer, const Ray& ray, int depth) {
 
     // Secondary rays, one level deeper.
     const bool transparent = material.transmittance > 0.0;
-    if (reached(Stage::fresnel) && transparent) return color + noted(&RayNode::fresnel, fresnel_blend(tracer, *hit, wo, depth));
-    if (material.specular > 0.0) color += noted(&RayNode::reflection, reflection(tracer, *hit, wo, depth));
-    if (reached(Stage::refraction) && transparent) color += noted(&RayNode::refraction, refraction(tracer, *hit, wo, depth));
+    if (reached(Stage::fresnel) && transparent)
+        return color + noted(&RayNode::fresnel, detail::call_lab("fresnel_blend", fresnel_blend, tracer, *hit, wo, depth));
+    if (material.specular > 0.0)
+        color += noted(&RayNode::reflection, detail::call_lab("reflection", reflection, tracer, *hit, wo, depth));
+    if (reached(Stage::refraction) && transparent)
+        color += noted(&RayNode::refraction, detail::call_lab("refraction", refraction, tracer, *hit, wo, depth));
     return color;
 }
 
 Color Tracer::Engine::local_colour(const Tracer& tracer, const Hit& hit, const Vec3& wo) const {
-    return settings.stage >= stage_number(Stage::blinn_phong) ? blinn_phong(tracer, hit, wo) : lambert(tracer, hit);
+    return settings.stage >= stage_number(Stage::blinn_phong) ? detail::call_lab("blinn_phong", blinn_phong, tracer, hit, wo)
+                                                              : detail::call_lab("lambert", lambert, tracer, hit);
 }
 
 void Tracer::begin_pixel(const PixelSample& sample) const { engine_->begin_pixel(sample.x, sample.y, sample.index); }
@@ -166,9 +171,9 @@ Color Tracer::Engine::trace_sample(const Tracer& tracer, int px, int py, int ind
     const Camera& camera = scene.camera();
     const bool lens = camera.aperture > 0.0 && settings.stage >= stage_number(Stage::depth_of_field);
     // (trace_pixels() made this very pinhole ray already, from the same x and y.)
-    const Ray eye_ray = lens    ? thin_lens_ray(camera, x, y, sample_numbers(sample, SampleUse::lens))
+    const Ray eye_ray = lens    ? detail::call_lab("thin_lens_ray", thin_lens_ray, camera, x, y, sample_numbers(sample, SampleUse::lens))
                         : ahead ? ahead->eye
-                                : primary_ray(camera, x, y);
+                                : detail::call_lab("primary_ray", primary_ray, camera, x, y);
     const Color color = tracer.trace(eye_ray, 1, RayKind::eye, Color(1.0));
     if (pixel_cut_short) ++stats.pixels_cut_short;
     return color;

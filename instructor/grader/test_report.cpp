@@ -16,6 +16,8 @@ namespace {
 using nlohmann::json;
 
 const std::string kNotImplemented = "is not implemented yet";
+// What a failing test shows of GoogleTest's report (with the test's own output), and of what the student's code printed.
+constexpr std::size_t kReportLines = 40, kPrintedLines = 20;
 
 // A JSON file the checker wrote, read as a regular file of at most 4 MiB without following links or blocking.
 std::optional<json> read_json(const std::filesystem::path& file) {
@@ -114,6 +116,13 @@ void classify_failures(TestOutcome& outcome, const std::vector<std::string>& fai
     }
 }
 
+// The worker's output under its heading, at most kPrintedLines lines of it.
+std::string what_the_code_printed(const ProcessRun& worker, const Limits& limits) {
+    std::string printed = worker.output;
+    if (worker.output_truncated) printed += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
+    return "--- what your code printed ---\n" + first_lines(printed, kPrintedLines);
+}
+
 } // namespace
 
 void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& limits, const std::filesystem::path& report_file) {
@@ -143,16 +152,18 @@ void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& lim
         for (const std::string& failure : *failures) details += failure + "\n";
     details += own_output(run.output, failures.value_or(std::vector<std::string>{}));
     if (run.output_truncated) details += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
-    outcome.output = details;
+    outcome.output = first_lines(details, kReportLines);
 }
 
 void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const ProcessRun& worker, const Limits& limits,
                    const std::filesystem::path& report_file, const std::filesystem::path& link_file) {
-    // What the checker said about the link, when it broke: its own file, not its output (which carries the worker's words).
-    std::string link_problem;
+    // What the checker said about the link, when it broke: its own file, not its output (which carries the worker's words);
+    // its second line names the call to the worker that was in progress ("during box_entry() (labs/10_bvh.cpp)").
+    std::string link_problem, crashed_in;
     try {
         const std::vector<std::string> lines = split_lines(read_regular_file(link_file, 4096));
         if (!lines.empty()) link_problem = lines.front();
+        if (lines.size() > 1 && lines[1].starts_with("during ")) crashed_in = lines[1].substr(7);
     } catch (const std::exception&) {
     }
     if (checker.end == ProcessRun::End::timed_out || worker.end == ProcessRun::End::timed_out) {
@@ -169,7 +180,7 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
         outcome.message = not_implemented_line(worker.output);
     } else if (worker.end == ProcessRun::End::signalled) {
         outcome.status = Status::crash;
-        outcome.message = "your code was " + describe(worker, limits);
+        outcome.message = (crashed_in.empty() ? "your code was " : "your code crashed in " + crashed_in + ": ") + describe(worker, limits);
     } else if (worker.end == ProcessRun::End::failed_to_start) {
         outcome.status = Status::crash;
         outcome.message = "your program " + describe(worker, limits);
@@ -185,19 +196,17 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
             outcome.status = Status::crash;
             outcome.message = "the checker " + describe(checker, limits);
         }
-        if (!worker.output.empty() || worker.output_truncated) {
-            outcome.output += "--- what your code printed ---\n" + worker.output;
-            if (worker.output_truncated) outcome.output += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
-        }
+        if (!worker.output.empty() || worker.output_truncated) outcome.output += what_the_code_printed(worker, limits);
         return;
     }
     std::string details = link_problem.empty() ? "" : "grading link: " + link_problem + "\n";
     const std::optional<std::vector<std::string>> failures = recorded_failures(report_file, outcome.name);
-    if (failures)
-        for (const std::string& failure : *failures) details += failure + "\n";
-    details += "--- what your code printed ---\n" + worker.output;
-    if (worker.output_truncated) details += "[... output cut at " + std::to_string(limits.output_bytes) + " bytes]\n";
-    outcome.output = details;
+    if (failures) {
+        std::string reported;
+        for (const std::string& failure : *failures) reported += failure + "\n";
+        details += first_lines(reported, kReportLines);
+    }
+    outcome.output = details + what_the_code_printed(worker, limits);
 }
 
 std::optional<std::map<std::string, bool>> read_test_results(const std::filesystem::path& report_file) {

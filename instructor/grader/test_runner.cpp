@@ -109,7 +109,8 @@ TestOutcome run_test(const TestProgram& program, const std::string& test_name) {
     outcome.name = test_name;
     classify_pair(outcome, checker, worker, program.limits, folder / "gtest.json", folder / "link.txt");
     outcome.message = replace_paths(outcome.message, program.path_replacements);
-    outcome.output = trim_text(replace_paths(outcome.output, program.path_replacements), 60);
+    // first_lines() has cut the report and the printed output; this bounds what is left (long lines, the link's line).
+    outcome.output = trim_text(replace_paths(outcome.output, program.path_replacements), 70, 300, 8000);
     outcome.image = read_image_numbers(folder / "image.json");
     if (fs::exists(folder / "reference.png") || fs::exists(folder / "yours.png")) outcome.pictures = folder;
     return outcome;

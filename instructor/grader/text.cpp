@@ -108,6 +108,14 @@ void print_text(std::FILE* stream, std::string_view text) {
 
 void print_line(std::FILE* stream, std::string_view line) { print_text(stream, terminal_text(line) + "\n"); }
 
+std::string first_lines(const std::string& text, std::size_t max_lines) {
+    const std::vector<std::string> lines = split_lines(text);
+    if (lines.size() <= max_lines) return text;
+    std::string kept;
+    for (std::size_t i = 0; i < max_lines; ++i) kept += lines[i] + "\n";
+    return kept + "\u2026 " + std::to_string(lines.size() - max_lines) + " more lines like these\n";
+}
+
 std::string format_points(long cents) {
     char text[32];
     std::snprintf(text, sizeof text, "%s%ld.%02ld", cents < 0 ? "-" : "", std::labs(cents) / 100, std::labs(cents) % 100);

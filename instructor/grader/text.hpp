@@ -20,6 +20,10 @@ std::string replace_paths(std::string text, std::vector<std::pair<std::string, s
 std::string trim_text(const std::string& text, std::size_t max_lines, std::size_t max_line_length = 300,
                       std::size_t max_chars = 4000);
 
+/// The text's first `max_lines` lines and, when it has more, one line "… N more lines like these":
+/// a mistake that fails every input alike says so thousands of times.
+std::string first_lines(const std::string& text, std::size_t max_lines);
+
 /// The lines of a text (without their newlines).
 std::vector<std::string> split_lines(const std::string& text);
 

@@ -6,7 +6,8 @@
 //
 // WHITTED_REMOTE_LABS (a compile definition) is the set of labs the worker
 // answers, as bits 1..N (lab k is bit k). With WHITTED_LINK_REPORT=<file> in the environment, a
-// broken link's reason is also written to that file (for the grader). Exit
+// broken link's reason is also written to that file (for the grader), then the
+// line "during box_entry() (labs/10_bvh.cpp)" when a call to the worker was in progress. Exit
 // code: GoogleTest's (0 all passed, 1 a failure), or 3 when the link broke (the worker died, stalled, or broke the protocol) or
 // the worker ended badly: then no test of this run may count as passed.
 #include "lab_link.hpp"
@@ -70,10 +71,13 @@ bool ended_well(const Link& link, const WorkerProcess& worker) {
     bool well = link.broken().empty();
     if (!well) {
         std::fprintf(stderr, "grading link broken: %s\n", link.broken().c_str());
-        // For the grader, apart from the output, which also carries what the worker's exceptions said.
+        if (!link.broken_during().empty()) std::fprintf(stderr, "grading link broken during %s\n", link.broken_during().c_str());
+        // For the grader, apart from the output, which also carries what the worker's exceptions said:
+        // the reason, then "during CALL" when a call to the worker was in progress.
         if (const char* report = std::getenv("WHITTED_LINK_REPORT"); report && *report)
             if (FILE* file = std::fopen(report, "w")) {
                 std::fprintf(file, "%s\n", link.broken().c_str());
+                if (!link.broken_during().empty()) std::fprintf(file, "during %s\n", link.broken_during().c_str());
                 std::fclose(file);
             }
     }

@@ -92,6 +92,13 @@ std::string refused_inside(Op caller, Op callee) {
     }
 }
 
+std::string lab_call_name(Op op) {
+    const int number = lab_of(op);
+    const bool scene_query = op == Op::scene_closest_hit || op == Op::scene_occluded;
+    const std::string function = scene_query ? "closest_hit()" : name_of(op);
+    return number == 0 ? function : function + " (labs/" + std::string(lab(number).stem) + ".cpp)";
+}
+
 Link::Link(Role role, const ChannelFds& fds, LabSet remote_labs)
     : role_(role), channel_(fds, role == Role::checker),
       in_(channel_, role == Role::checker ? kMaxFromWorker : kMaxFromChecker),
@@ -203,7 +210,11 @@ Reader& Link::Call::send() {
         write_frame(link_.channel_, FrameType::call, args_.bytes());
         reply_ = link_.wait_for_reply();
     } catch (const LinkError& e) {
-        if (link_.role_ == Role::checker) link_.fail(e.what());
+        if (link_.role_ == Role::checker) {
+            // The innermost call catches the break first: the call the worker was running when it died.
+            if (link_.broken_.empty()) link_.broken_during_ = lab_call_name(op_);
+            link_.fail(e.what());
+        }
         throw;
     }
     reader_ = std::make_unique<Reader>(reply_.payload);

@@ -56,6 +56,9 @@ constexpr int kLastOp = static_cast<int>(Op::intersect_shape);
 int lab_of(Op op);
 /// "blinn_phong()" for Op::blinn_phong, for messages.
 std::string name_of(Op op);
+/// "box_entry() (labs/10_bvh.cpp)": the lab function `op` runs and its file, for a student's
+/// messages (the scene's queries run lab 1's closest_hit()).
+std::string lab_call_name(Op op);
 
 /// Why the checker does not answer `callee` while the graded lab's `caller`
 /// runs in the worker, or "" when it does. Beyond the rule of which labs the
@@ -103,6 +106,9 @@ class Link {
     Role role() const { return role_; }
     /// Why the link broke, or empty while it works.
     const std::string& broken() const { return broken_; }
+    /// The innermost call to the other side that was in progress when the link broke, as
+    /// lab_call_name() says it (the checker only: a worker that dies mid-call died in it); empty if none.
+    const std::string& broken_during() const { return broken_during_; }
 
     /// Serves calls until the other side says goodbye or closes the link (the worker's main loop).
     void serve_until_closed();
@@ -141,6 +147,7 @@ class Link {
     LabSet remote_labs_;
     std::recursive_mutex mutex_;
     std::string broken_;
+    std::string broken_during_;
     int depth_ = 0;
     std::vector<Op> calls_out_; // the calls this side has made that are still waiting, innermost last
     std::uint64_t next_handle_ = 1;

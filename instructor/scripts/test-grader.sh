@@ -64,7 +64,9 @@ ok(statuses("02_shadows") | statuses("05_refraction") <= {"crash", "timeout", "f
 ok(statuses("integration") == {"skipped"}, "integration: " + str(statuses("integration")))
 ok(all(lab_score(lab) == 0 for lab in ("02_shadows", "03_blinn_phong", "05_refraction", "integration")), "points for a broken lab")
 ok(any("undeclared_variable" in t["output"] and "labs/03_blinn_phong.cpp:" in t["output"] for t in by_lab["03_blinn_phong"]), "no compiler error shown")
-ok(any("SIGSEGV" in t["output"] for t in by_lab["02_shadows"]), "no SIGSEGV shown")'
+ok(any("SIGSEGV" in t["output"] for t in by_lab["02_shadows"]), "no SIGSEGV shown")
+ok(any("crash: your code crashed in spawn_ray() (labs/02_shadows.cpp): killed by SIGSEGV" in t["output"] for t in by_lab["02_shadows"]),
+   "no crash names spawn_ray()")'
 
 # (d) A time budget that runs out: a valid results.json, the tests not run are timeouts that say why. Lab 1's visible
 # tests are graded within about 8 s even on a machine twice as slow as the project's; each of lab 2's tests then waits

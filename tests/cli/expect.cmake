@@ -1,6 +1,6 @@
 # Runs one command and checks its exit code and that its output matches a pattern.
 #   cmake -DEXPECT_EXIT=2 -DEXPECT_OUTPUT=regex -DCOMMAND=a;b;c -P expect.cmake
-# -DFORBID_OUTPUT=regex: the output must also not match that pattern.
+# -DFORBID_OUTPUT=regex: the output must also not match that pattern (none when empty).
 # With WHITTED_SKIP_AS_ROOT in the environment, prints "SKIPPED: running as root" instead when run as root
 # (root ignores file permissions).
 if(DEFINED ENV{WHITTED_SKIP_AS_ROOT})
@@ -19,7 +19,7 @@ endif()
 if(NOT all MATCHES "${EXPECT_OUTPUT}")
   message(FATAL_ERROR "output does not match '${EXPECT_OUTPUT}':\n${all}")
 endif()
-if(DEFINED FORBID_OUTPUT AND all MATCHES "${FORBID_OUTPUT}")
+if(NOT "${FORBID_OUTPUT}" STREQUAL "" AND all MATCHES "${FORBID_OUTPUT}")
   message(FATAL_ERROR "output matches '${FORBID_OUTPUT}', which it must not:\n${all}")
 endif()
 if(DEFINED EXPECT_FILE AND NOT EXISTS "${EXPECT_FILE}")

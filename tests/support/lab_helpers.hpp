@@ -1,5 +1,6 @@
 // Helpers for the labs' tests: directions at given angles, simple materials,
-// and tracing one ray through a small scene.
+// and tracing one ray through a small scene. (A failing test prints vectors,
+// rays and hits by their fields: printers.hpp, which every test file includes.)
 #pragma once
 
 #include "whitted/labs.hpp"
@@ -10,6 +11,21 @@
 #include <gtest/gtest.h>
 
 namespace whitted::testing_helpers {
+
+/// For a test that checks many inputs in a loop: true once `most` of the test's
+/// assertions have failed, after adding one failure that says the test stops
+/// there. End the loop's body with `if (enough_failures()) return;`: one mistake
+/// usually fails every input alike, and pages of the same failure would bury
+/// the first ones, which tell the most.
+inline bool enough_failures(int most = 5) {
+    const ::testing::TestResult& result = *::testing::UnitTest::GetInstance()->current_test_info()->result();
+    int failed = 0;
+    for (int i = 0; i < result.total_part_count(); ++i) failed += result.GetTestPartResult(i).failed() ? 1 : 0;
+    if (failed < most) return false;
+    ADD_FAILURE() << "the test stops after these " << failed << " failures: its other inputs were not checked "
+                  << "(fix the first failure above, then run it again)";
+    return true;
+}
 
 /// Radians to degrees.
 inline double degrees(double radians_value) { return radians_value * 180.0 / kPi; }

@@ -96,24 +96,8 @@ std::optional<MissingRefraction> check_missing_refraction(const RayTree& tree, i
 
 bool blocked_by_own_surface(const RayTree& tree, int index, const TraceContext& context) {
     const RayNode& node = tree.nodes[index];
-    if (node.kind != RayKind::shadow || !node.blocked || !node.hit || node.parent < 0) return false;
-    const RayNode& parent = tree.nodes[node.parent];
-    if (!parent.hit || parent.hit->primitive != node.hit->primitive) return false;
-    // A feeler only goes towards a light in front of the surface. Seen from
-    // outside, a sphere or box cannot stand between its own point and such a
-    // light, and a flat shape never can: meeting the same shape again is the
-    // rounding error of lab 2. From inside a sphere or box, or on a cone, the
-    // shape may really be in the way; there only a hit just after the start
-    // (a tiny t) is the rounding error.
-    const Shape& shape = context.scene.primitives()[node.hit->primitive].shape;
-    const Sphere* sphere = std::get_if<Sphere>(&shape);
-    const bool flat = std::holds_alternative<Plane>(shape) || std::holds_alternative<Triangle>(shape);
-    const bool from_outside = parent.hit->front_face != (sphere && sphere->inward);
-    // (Only for a feeler that leaves on the outer side: code that casts feelers
-    // to lights behind the surface rightly finds the far side of the shape.)
-    const bool leaves_outwards = glm::dot(node.ray.direction, parent.hit->geometric_normal) > 0.0;
-    const bool convex = leaves_outwards && (flat || ((sphere || std::holds_alternative<Box>(shape)) && from_outside));
-    return convex || node.hit->t < 1e-6 * (1.0 + max_abs_component(node.ray.origin));
+    if (node.parent < 0 || !tree.nodes[node.parent].hit) return false;
+    return hits_its_own_surface(context.scene, *tree.nodes[node.parent].hit, node);
 }
 
 } // namespace whitted

@@ -77,15 +77,22 @@ json node_json(const RayTree& tree, int index, const TraceContext& context) {
 } // namespace
 
 json ray_tree_json(const RayTree& tree, const TraceContext& context) {
-    return {{"scene", context.scene_path},
-            {"pixel", {context.x, context.y}},
-            {"width", context.width},
-            {"height", context.height},
-            {"stage", context.settings.stage},
-            {"max_depth", context.settings.max_depth},
-            {"min_weight", context.settings.min_weight},
-            {"color", json_vec(tree.nodes.front().color)},
-            {"ray", node_json(tree, 0, context)}};
+    json j = {{"scene", context.scene_path},
+              {"pixel", {context.x, context.y}},
+              {"width", context.width},
+              {"height", context.height},
+              {"stage", context.settings.stage},
+              {"max_depth", context.settings.max_depth},
+              {"min_weight", context.settings.min_weight},
+              {"color", json_vec(tree.nodes.front().color)},
+              {"ray", node_json(tree, 0, context)}};
+    // A pixel of several samples: "color" and "ray" are sample `index`'s; "pixel_color" is the pixel's value.
+    if (const std::optional<ShownSample>& sample = context.sample)
+        j["sample"] = {{"index", sample->index},
+                       {"count", sample->count},
+                       {"place", {json_number(sample->place.x), json_number(sample->place.y)}},
+                       {"pixel_color", json_vec(sample->pixel)}};
+    return j;
 }
 
 } // namespace whitted

@@ -19,6 +19,13 @@
 
 namespace whitted {
 
+/// Which of a pixel's samples (lab 7) the tree is of, and the pixel's value.
+struct ShownSample {
+    int index = 0, count = 1; // sample `index` of `count` (0 .. count - 1)
+    Vec2 place;               // where in the pixel it was traced, from its lower left corner, 0..1
+    Color pixel;              // the pixel's value: pixel_color(), the average of its samples
+};
+
 /// What the reports say about the traced pixel besides its tree.
 struct TraceContext {
     const Scene& scene;
@@ -26,6 +33,7 @@ struct TraceContext {
     std::string scene_path;
     int x = 0, y = 0;          // the pixel: column, and row from the top of the image
     int width = 0, height = 0; // the image's size
+    std::optional<ShownSample> sample{}; // none: the pixel is one ray through its centre, the tree's eye ray
 };
 
 /// "sphere (scenes/x.p3f:12)": the shape and the scene-file line that made it.
@@ -56,7 +64,7 @@ struct MissingRefraction {
 /// above the maximum depth) and none of its children is a refracted ray.
 std::optional<MissingRefraction> check_missing_refraction(const RayTree& tree, int index, const TraceContext& context);
 
-/// True when a blocked shadow feeler was stopped by the very surface it starts on.
+/// True when a blocked shadow feeler was stopped by the very surface it starts on (hits_its_own_surface()).
 bool blocked_by_own_surface(const RayTree& tree, int index, const TraceContext& context);
 
 /// The tree as indented text, with the checks, for the terminal.

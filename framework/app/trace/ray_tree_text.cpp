@@ -191,16 +191,29 @@ struct TextWriter {
 std::string ray_tree_text(const RayTree& tree, const TraceContext& context) {
     TextWriter writer{tree, context, {}};
     const Color& colour = tree.nodes.front().color;
-    const std::string in_image =
-        is_finite(colour) ? std::to_string(to_byte(colour.r, Encoding::linear)) + " " +
-                                std::to_string(to_byte(colour.g, Encoding::linear)) + " " +
-                                std::to_string(to_byte(colour.b, Encoding::linear))
-                          : "magenta: NaN or infinite, a bug";
-    writer.line("", "pixel (" + std::to_string(context.x) + ", " + std::to_string(context.y) + ") of " +
-                        std::to_string(context.width) + "x" + std::to_string(context.height) + ", stage " +
-                        std::to_string(context.settings.stage) + ", max depth " +
-                        std::to_string(context.settings.max_depth) + ": colour " + vec(colour) + ", in the image " +
-                        in_image);
+    // "(0.2, 0.4, 0.6), in the image 51 102 153": a colour, and the bytes of the image file.
+    const auto colour_in_image = [](const Color& c) {
+        return vec(c) + ", in the image " +
+               (is_finite(c) ? std::to_string(to_byte(c.r, Encoding::linear)) + " " +
+                                   std::to_string(to_byte(c.g, Encoding::linear)) + " " +
+                                   std::to_string(to_byte(c.b, Encoding::linear))
+                             : "magenta: NaN or infinite, a bug");
+    };
+    const std::string pixel = "pixel (" + std::to_string(context.x) + ", " + std::to_string(context.y) + ") of " +
+                              std::to_string(context.width) + "x" + std::to_string(context.height) + ", stage " +
+                              std::to_string(context.settings.stage) + ", max depth " +
+                              std::to_string(context.settings.max_depth);
+    if (const std::optional<ShownSample>& sample = context.sample) {
+        const std::string count = std::to_string(sample->count);
+        writer.line("", pixel + ", " + count + " samples a pixel: the pixel's value, the average of its " + count +
+                            " samples (pixel_color()), " + colour_in_image(sample->pixel));
+        writer.line("", "the rays below are sample " + std::to_string(sample->index) + " of " + count + " (--sample 0 to " +
+                            std::to_string(sample->count - 1) + " shows another), traced at (" + number(sample->place.x) +
+                            ", " + number(sample->place.y) + ") in the pixel (from its lower left corner): colour " +
+                            vec(colour));
+    } else {
+        writer.line("", pixel + ": one ray through its centre, colour " + colour_in_image(colour));
+    }
     writer.line("", "");
     writer.node(0, "", "");
     return writer.out;

@@ -23,7 +23,7 @@ namespace {
 struct TraceOptions {
     std::string scene;
     std::vector<int> pixel; // column, row from the top
-    std::optional<int> width, height, max_depth, stage;
+    std::optional<int> width, height, max_depth, stage, samples, sample; // samples: --spp; sample: --sample
     double min_weight = RenderSettings{}.min_weight;
     std::string json;    // FILE, or - for the standard output instead of the text
     std::string picture; // FILE: the tree drawn over the scene
@@ -61,18 +61,46 @@ int run_trace(const TraceOptions& options) {
     settings.stage = *stage;
     settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);
     settings.min_weight = options.min_weight;
+    settings.samples_per_pixel = options.samples.value_or(loaded.data.samples_per_pixel);
+    // As render: samples from lab 7 on, one ray through the pixel's centre before.
+    const int samples = settings.stage >= stage_number(Stage::anti_aliasing) ? settings.samples_per_pixel : 0;
+    if (options.sample && samples == 0) {
+        std::fprintf(stderr, "whitted: --sample %d: %s, so there are no samples to pick\n", *options.sample,
+                     settings.samples_per_pixel == 0 ? "the scene traces one ray through each pixel's centre (no spp; --spp N asks for N samples)"
+                                                     : "below stage 7 (lab 7, anti-aliasing) each pixel is one ray through its centre");
+        return exit_code::bad_input;
+    }
+    if (options.sample && *options.sample >= samples) {
+        std::fprintf(stderr, "whitted: --sample %d: each pixel has %d samples here, numbered 0 to %d\n", *options.sample,
+                     samples, samples - 1);
+        return exit_code::bad_input;
+    }
 
     std::optional<SceneData> side_data;
     if (!options.picture.empty()) side_data = loaded.data;
-    const Scene scene(std::move(loaded.data), linked_leaf_kernels());
+    // The scene as `whitted render` builds it: from lab 10 on, walked with the lab's BVH.
+    const BvhChoice bvh = settings.stage >= stage_number(Stage::bvh) ? BvhChoice::lab : BvhChoice::framework;
+    const Scene scene(std::move(loaded.data), linked_leaf_kernels(), bvh);
 
     // The same pixel as `whitted render` computes: rows go down, the viewport's y goes up.
+    const int row = height - 1 - y;
     RayStats stats;
     RayTree tree;
     const Tracer tracer(scene, settings, stats, &tree);
-    tracer.trace_pixel(x + 0.5, (height - 1 - y) + 0.5);
+    TraceContext context{scene, settings, options.scene, x, y, width, height, std::nullopt};
+    if (samples > 0) {
+        // One sample's tree, where pixel_color() traces it; the pixel's value, the average of all its samples,
+        // from a tracer that records nothing.
+        const PixelSample sample{x, row, options.sample.value_or(0)};
+        const Vec2 position = sample_position(sample, samples);
+        tracer.trace_sample(sample, position.x, position.y);
+        RayStats pixel_stats;
+        const Tracer pixel_tracer(scene, settings, pixel_stats);
+        context.sample = ShownSample{sample.index, samples, position - Vec2(x, row), sampled_pixel_color(pixel_tracer, x, row)};
+    } else {
+        tracer.trace_pixel(x + 0.5, row + 0.5);
+    }
 
-    const TraceContext context{scene, settings, options.scene, x, y, width, height};
     if (options.json == "-") {
         if (!write_json(ray_tree_json(tree, context), "-")) return exit_code::bad_input;
     } else {
@@ -91,7 +119,7 @@ int run_trace(const TraceOptions& options) {
         } else {
             SceneData eye_data = *side_data;
             eye_data.camera = eye_data.camera.with_resolution(width * scale, height * scale);
-            eye_view = render(Scene(std::move(eye_data), linked_leaf_kernels()), settings, options.threads).image;
+            eye_view = render(Scene(std::move(eye_data), linked_leaf_kernels(), bvh), settings, options.threads).image;
         }
         side_data->camera = side_camera_for(tree, scene.camera(), width * scale, height * scale);
         const Scene side_scene(std::move(*side_data), linked_leaf_kernels());
@@ -126,6 +154,13 @@ Command add_trace_command(CLI::App& app) {
     command->add_option("--max-depth", options->max_depth, "Deepest ray in the ray tree (default: the scene's, else 5)")
         ->check(CLI::Range(1, 100));
     command->add_option("--min-weight", options->min_weight, "As for render (default 1/1024)")->check(min_weight_validator());
+    command->add_option("--spp", options->samples, "Samples per pixel, as for render (default: the scene's spp, else 0)")
+        ->check(CLI::Range(0, 65536));
+    command->add_option("--sample", options->sample,
+                        "On a pixel of several samples (spp, lab 7), which one to show: 0 to spp - 1 (default 0); "
+                        "the pixel's value, the average of them all, is shown too")
+        ->type_name("K")
+        ->check(CLI::NonNegativeNumber);
     command->add_option("--stage", options->stage,
                         "Use the features of labs 1..K only: " + stage_list() + " (default: the highest stage whose labs are done)")
         ->check(CLI::Range(1, kLabCount));

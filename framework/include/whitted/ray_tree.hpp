@@ -55,4 +55,10 @@ struct RayTree {
     void clear() { nodes.clear(); }
 };
 
+class Scene;
+
+/// True when `feeler`, a shadow feeler cast from the hit `start`, was blocked
+/// by the very surface it starts from: shadow acne (lab 2), not a shadow.
+bool hits_its_own_surface(const Scene& scene, const Hit& start, const RayNode& feeler);
+
 } // namespace whitted

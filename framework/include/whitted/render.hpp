@@ -27,6 +27,14 @@ using ProgressCallback = std::function<void(double fraction_done)>;
 RenderResult render(const Scene& scene, const RenderSettings& settings, int threads = 0,
                     const ProgressCallback& progress = {});
 
+/// The colour render() gives pixel (x, y) (column, and row from the bottom) when the tracer's settings
+/// ask for samples (lab 7, anti-aliasing): the labs' pixel_color().
+Color sampled_pixel_color(const Tracer& tracer, int x, int y);
+
+/// Where the handout's pixel_color() traces `sample` of its pixel when the pixel has `count` samples:
+/// the viewport position (x, y) + stratified_sample(index, count, sample_numbers(sample, SampleUse::pixel)).
+Vec2 sample_position(const PixelSample& sample, int count);
+
 /// The colour of the pixel whose centre is at viewport position (x, y) (see primary_ray).
 using PixelFunction = std::function<Color(double x, double y)>;
 

@@ -10,6 +10,10 @@ TEST(Fake, Passes) { EXPECT_EQ(2 + 2, 4); }
 
 TEST(Fake, GivesAWrongAnswer) { EXPECT_EQ(2 + 2, 5) << "arithmetic is broken"; }
 
+TEST(Fake, FailsEveryInput) { // 6 lines a failure, 3000 in all
+    for (int input = 0; input < 500; ++input) EXPECT_EQ(input, -1) << "input " << input;
+}
+
 TEST(Fake, CallsAStub) { throw std::logic_error("labs/02_shadows.cpp:14: spawn_ray() is not implemented yet"); }
 
 TEST(Fake, ThrowsSomethingElse) { throw std::runtime_error("the scene has no camera"); }
@@ -27,6 +31,14 @@ TEST(Fake, Loops) {
 TEST(Fake, StubThrowsInAThread) {
     std::thread worker([] { throw std::logic_error("labs/05_refraction.cpp:20: refracted_direction() is not implemented yet"); });
     worker.join();
+}
+
+// Writes what instructor/link/checker_main.cpp writes when the worker dies while answering box_entry().
+TEST(Fake, WorkerDiesDuringBoxEntry) {
+    const char* report = std::getenv("WHITTED_LINK_REPORT");
+    ASSERT_NE(report, nullptr);
+    std::ofstream(report) << "the other side closed the link\nduring box_entry() (labs/10_bvh.cpp)\n";
+    ADD_FAILURE() << "the link broke";
 }
 
 // Writes what tests/support/image_check.cpp writes for the grader: an image 2 % wrong.

@@ -49,6 +49,10 @@ int main(int argc, char** argv) {
         for (long i = 0; i < std::atol(argument.c_str()) * 1024; ++i) std::printf("%s\n", line.c_str());
         return 0;
     }
+    if (mode == "lines") { // prints N numbered lines, then exits 0
+        for (long i = 1; i <= std::atol(argument.c_str()); ++i) std::printf("line %ld\n", i);
+        return 0;
+    }
     if (mode == "env") {
         const char* value = std::getenv(argument.c_str());
         std::printf("%s\n", value ? value : "(unset)");

@@ -184,3 +184,9 @@ TEST(Text, PathsBecomeRelativeLongestFirst) {
     EXPECT_EQ(format_points(5), "0.05");
     EXPECT_EQ(trim_text("a\nb\nc\n", 2), "a\nb\n[... 1 more lines]\n");
 }
+
+TEST(Text, FirstLinesSaysHowManyMoreThereWere) {
+    EXPECT_EQ(first_lines("a\nb\nc\nd\n", 2), "a\nb\n\u2026 2 more lines like these\n");
+    EXPECT_EQ(first_lines("a\nb", 2), "a\nb") << "nothing cut, nothing said";
+    EXPECT_EQ(first_lines("", 2), "");
+}

@@ -2,6 +2,7 @@
 // worker) and ends with the right status; run together, only clean passes count. fake_lab plays the checker (its
 // tests end in every way a test can); misbehaving_child plays the worker.
 #include "grader/test_runner.hpp"
+#include "grader/text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,9 +34,9 @@ TEST_F(TestRunnerTest, ListsEveryTestInOrder) {
     std::string problem;
     const std::vector<std::string> names = list_tests(program, problem);
     EXPECT_EQ(problem, "");
-    const std::vector<std::string> expected = {"Fake.Passes", "Fake.GivesAWrongAnswer", "Fake.CallsAStub", "Fake.ThrowsSomethingElse",
-                                               "Fake.Segfaults", "Fake.Loops", "Fake.StubThrowsInAThread",
-                                               "FakeImage.IsTwoPercentOff", "HiddenFake.Passes"};
+    const std::vector<std::string> expected = {"Fake.Passes", "Fake.GivesAWrongAnswer", "Fake.FailsEveryInput", "Fake.CallsAStub",
+                                               "Fake.ThrowsSomethingElse", "Fake.Segfaults", "Fake.Loops", "Fake.StubThrowsInAThread",
+                                               "Fake.WorkerDiesDuringBoxEntry", "FakeImage.IsTwoPercentOff", "HiddenFake.Passes"};
     EXPECT_EQ(names, expected);
 }
 
@@ -71,6 +72,22 @@ TEST_F(TestRunnerTest, MessagesSayWhatHappened) {
     EXPECT_EQ(wrong.output.find(" ms)"), std::string::npos) << "no durations: " << wrong.output;
 }
 
+// A mistake that fails every input alike shows its first 40 lines, and what the student's code printed its
+// first 20, each then with one line saying how many more there were.
+TEST_F(TestRunnerTest, AFailingTestShowsTheFirstLinesOfItsReportAndOfWhatTheCodePrinted) {
+    program.worker = {MISBEHAVING_CHILD, "lines", "100"};
+    const TestOutcome outcome = run_test(program, "Fake.FailsEveryInput");
+    EXPECT_EQ(outcome.status, Status::failed);
+    const std::vector<std::string> lines = split_lines(outcome.output);
+    ASSERT_EQ(lines.size(), 40u + 1u + 1u + 20u + 1u) << outcome.output;
+    EXPECT_EQ(lines[0].find("Failure"), std::string::npos) << "GoogleTest's report, file:line first: " << lines[0];
+    EXPECT_TRUE(lines[40].starts_with("\u2026 29") && lines[40].ends_with(" more lines like these")) << lines[40];
+    EXPECT_EQ(lines[41], "--- what your code printed ---");
+    EXPECT_EQ(lines[42], "line 1");
+    EXPECT_EQ(lines[61], "line 20");
+    EXPECT_EQ(lines[62], "\u2026 80 more lines like these");
+}
+
 TEST_F(TestRunnerTest, ImageNumbersAndPicturesAreCollected) {
     const TestOutcome outcome = run_test(program, "FakeImage.IsTwoPercentOff");
     EXPECT_EQ(outcome.status, Status::failed);
@@ -101,6 +118,15 @@ TEST_F(TestRunnerTest, TheWorkersEndingComesFirst) {
     outcome = run_test(program, "Fake.Passes");
     EXPECT_EQ(outcome.status, Status::crash);
     EXPECT_NE(outcome.message.find("went on running after the test was over"), std::string::npos) << outcome.message;
+}
+
+// The checker names the call to the worker that was in progress when the worker died; the crash's message says it.
+TEST_F(TestRunnerTest, ACrashNamesTheLabFunctionThatWasRunning) {
+    program.worker = {MISBEHAVING_CHILD, "segfault"};
+    const TestOutcome outcome = run_test(program, "Fake.WorkerDiesDuringBoxEntry");
+    EXPECT_EQ(outcome.status, Status::crash);
+    EXPECT_EQ(outcome.message.rfind("your code crashed in box_entry() (labs/10_bvh.cpp): killed by SIGSEGV", 0), 0u)
+        << outcome.message;
 }
 
 // A lab's tests run together first; only the passes of a run that ended

@@ -1,5 +1,6 @@
-// Lab 4 written by a student who tries to get answers grading must not give:
-// mirror_direction() is right; reflection() misbehaves as WHITTED_HOSTILE says.
+// Lab 4 written by a student who tries to get answers grading must not give
+// (or whose code crashes): mirror_direction() is right; reflection() misbehaves
+// as WHITTED_HOSTILE says.
 // Every reflection test run with it must fail: the checker refuses the first
 // two and says the link broke; the worker itself refuses a tracer it did not
 // make (and were that check removed, the checker would refuse what it asks).
@@ -24,6 +25,11 @@ Color reflection(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth
         Hit forged = hit;
         forged.material = 123456789;
         return Color(is_lit(tracer, forged, PointLight{Point3(0.0, 10.0, 0.0), Color(1.0)}) ? 1.0 : 0.0);
+    }
+    if (mode == "segfault") {
+        // Dies in the middle of the call: the checker names the call it was waiting for.
+        volatile int* nowhere = nullptr;
+        *nowhere = 1;
     }
     if (mode == "own_tracer") {
         // A tracer of its own, at stage 6, to get lab 5 and 6 answers through trace().
