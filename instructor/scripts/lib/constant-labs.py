@@ -1,6 +1,6 @@
 """Writes "constant answers" submissions: every lab function returns a constant.
 
-    python3 instructor/scripts/lib/constant-labs.py OUT [--contract labs.hpp] [--variant NAME ...] [--list]
+    python3 instructor/scripts/lib/constant-labs.py OUT [--contract labs.hpp] [--variant NAME ...] [--list] [--switch]
 
 Reads the lab contract (framework/include/whitted/labs.hpp: its "// ---- Lab N:
 title (NN_name.cpp)" sections and the declarations under each) and writes
@@ -19,8 +19,11 @@ function of its section with one body that ignores what the function is for:
               one unit along the ray, (1, 0, 0)).
 
 None of them may score: instructor/scripts/test-hostile.sh grades them, and the
-CTest proof `ctest -L constant` (instructor/tests/mistakes/CMakeLists.txt) runs
-every lab's tests against each. A contract function whose return type this
+CTest proof `ctest -L constant` (instructor/tests/constants/CMakeLists.txt) runs
+every lab's tests against each. For that proof, --switch writes instead
+OUT/switch/NN_name.cpp, every variant in one file: each function answers the
+variant that the environment variable WHITTED_CONSTANT names for the whole run
+(one test program per lab rather than one per lab and variant). A contract function whose return type this
 script does not know stops it with an error, so a new function cannot slip past
 the proof: add its constants to CONSTANTS below.
 """
@@ -126,15 +129,49 @@ def answer(ret, name, params, variant):
     return third
 
 
+# The --switch files: which variant WHITTED_CONSTANT names, read once.
+CHOOSER = """namespace {
+
+/// The variant WHITTED_CONSTANT names (%s), the same for the whole run.
+int constant_variant() {
+    static const int variant = [] {
+        const char* name = std::getenv("WHITTED_CONSTANT");
+        const char* const names[] = {%s};
+        for (int i = 0; name && i < %d; ++i)
+            if (std::strcmp(name, names[i]) == 0) return i;
+        std::fprintf(stderr, "WHITTED_CONSTANT must name one of: %s\\n");
+        std::abort();
+    }();
+    return variant;
+}
+
+} // namespace
+""" % (", ".join(VARIANTS), ", ".join(f'"{v}"' for v in VARIANTS), len(VARIANTS), " ".join(VARIANTS))
+
+
 def lab_file(stem, functions, variant):
-    lines = [f"// {stem}: every function answers the same whatever it is asked ({variant}; made by",
+    """The lab file of one variant, or of every variant chosen at run time when `variant` is None."""
+    what = variant or "the variant WHITTED_CONSTANT names"
+    lines = [f"// {stem}: every function answers the same whatever it is asked ({what}; made by",
              "// instructor/scripts/lib/constant-labs.py). It must score nothing.",
-             '#include "whitted/labs.hpp"', "", "#include <cstdint>", "", "namespace whitted {", ""]
+             '#include "whitted/labs.hpp"', "", "#include <cstdint>"]
+    if variant is None:
+        lines += ["#include <cstdio>", "#include <cstdlib>", "#include <cstring>"]
+    lines += ["", "namespace whitted {", ""]
+    if variant is None:
+        lines += [CHOOSER]
     for ret, name, params in functions:
         names = [param for _, param in split_params(params)]
         lines.append(f"{ret} {name}({params}) {{")
         lines.append("    " + " ".join(f"(void){param};" for param in names))
-        lines.append(f"    return {answer(ret, name, params, variant)};")
+        if variant is None:
+            lines.append("    switch (constant_variant()) {")
+            for i, each in enumerate(VARIANTS):
+                label = f"case {i}" if i + 1 < len(VARIANTS) else "default"
+                lines.append(f"    {label}: return {answer(ret, name, params, each)};")
+            lines.append("    }")
+        else:
+            lines.append(f"    return {answer(ret, name, params, variant)};")
         lines.append("}")
         lines.append("")
     lines.append("} // namespace whitted")
@@ -147,6 +184,7 @@ def main():
     parser.add_argument("--contract", default=os.path.join(os.path.dirname(__file__), "../../../framework/include/whitted/labs.hpp"))
     parser.add_argument("--variant", action="append", choices=VARIANTS, help="only these variants (default: all)")
     parser.add_argument("--list", action="store_true", help="print the variants and stop")
+    parser.add_argument("--switch", action="store_true", help="write OUT/switch/: every variant in one file, WHITTED_CONSTANT chooses")
     args = parser.parse_args()
     if args.list:
         print("\n".join(VARIANTS))
@@ -154,8 +192,8 @@ def main():
     if not args.out:
         parser.error("OUT is required")
     labs = parse_contract(args.contract)
-    for variant in args.variant or VARIANTS:
-        folder = os.path.join(args.out, variant)
+    for variant in [None] if args.switch else args.variant or VARIANTS:
+        folder = os.path.join(args.out, variant or "switch")
         os.makedirs(folder, exist_ok=True)
         for stem, functions in labs:
             text = lab_file(stem, functions, variant)
