@@ -27,6 +27,13 @@ case "${1:-}" in
     --ci) packages+=(python3 python3-yaml patch qemu-user) optional=(bubblewrap chromium) ;;
     *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz|--browser|--proofs|--ci]" >&2; exit 2 ;;
 esac
+# The instructor tree's `make test` also builds a catalogued mistake (a patch of the reference: GNU patch)
+# and the constant-answers proof (its lab files are written by a python3 script).
+if [ -d "$(dirname "$0")/../instructor" ]; then
+    for package in patch python3; do
+        [[ " ${packages[*]} " == *" $package "* ]] || packages+=("$package")
+    done
+fi
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json, libseccomp)${optional[*]:+; optional: ${optional[*]}}" >&2

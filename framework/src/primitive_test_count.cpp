@@ -1,19 +1,8 @@
 #include "whitted/primitive_test_count.hpp"
 
-namespace whitted {
-namespace {
+namespace whitted::detail {
 
-// The innermost count of this thread: a count belongs to the thread that made it.
-thread_local PrimitiveTestCount* t_innermost = nullptr;
+// A count belongs to the thread that made it.
+constinit thread_local PrimitiveTestCount* innermost_primitive_test_count = nullptr;
 
-} // namespace
-
-PrimitiveTestCount::PrimitiveTestCount() : outer_(t_innermost) { t_innermost = this; }
-
-PrimitiveTestCount::~PrimitiveTestCount() { t_innermost = outer_; }
-
-void PrimitiveTestCount::note_test() {
-    if (PrimitiveTestCount* count = t_innermost) ++count->tests_;
-}
-
-} // namespace whitted
+} // namespace whitted::detail

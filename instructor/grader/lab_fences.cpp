@@ -43,6 +43,7 @@ constexpr FenceRule kFenceRules[] = {
     {10, "whitted::closest_hit(", "lab 1's closest_hit() tests every primitive it is given: a walk tests the primitives "
                                   "of the leaves it reaches, one by one, with intersect()"},
     {10, "whitted::intersect_box(", "it is the framework's box primitive, whose slab test is box_entry()'s answer"},
+    {7, "whitted::sample_position(", "it places a pixel's samples as pixel_color() is to place them (for whitted trace)"},
 };
 
 /// The demangled name of a symbol of the kit (the instructor's own), or the name itself.

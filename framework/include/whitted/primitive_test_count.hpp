@@ -11,12 +11,20 @@
 
 namespace whitted {
 
+class PrimitiveTestCount;
+
+namespace detail {
+/// This thread's innermost count, or null (primitive_test_count.cpp): read inline by
+/// note_test(), which intersect() calls for every primitive test.
+extern constinit thread_local PrimitiveTestCount* innermost_primitive_test_count;
+} // namespace detail
+
 /// Counts the ray-primitive tests made on this thread while it lives; when
 /// counts nest, only the innermost one counts.
 class PrimitiveTestCount {
   public:
-    PrimitiveTestCount();
-    ~PrimitiveTestCount();
+    PrimitiveTestCount() : outer_(detail::innermost_primitive_test_count) { detail::innermost_primitive_test_count = this; }
+    ~PrimitiveTestCount() { detail::innermost_primitive_test_count = outer_; }
     PrimitiveTestCount(const PrimitiveTestCount&) = delete;
     PrimitiveTestCount& operator=(const PrimitiveTestCount&) = delete;
 
@@ -24,7 +32,9 @@ class PrimitiveTestCount {
     std::uint64_t tests() const { return tests_; }
 
     /// Notes one test in this thread's innermost count, if there is one.
-    static void note_test();
+    static void note_test() {
+        if (PrimitiveTestCount* count = detail::innermost_primitive_test_count) ++count->tests_;
+    }
 
   private:
     std::uint64_t tests_ = 0;

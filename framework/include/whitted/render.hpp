@@ -33,6 +33,7 @@ Color sampled_pixel_color(const Tracer& tracer, int x, int y);
 
 /// Where the handout's pixel_color() traces `sample` of its pixel when the pixel has `count` samples:
 /// the viewport position (x, y) + stratified_sample(index, count, sample_numbers(sample, SampleUse::pixel)).
+/// For whitted trace: lab 7's pixel_color() places its samples itself (grading refuses a lab 7 that calls this).
 Vec2 sample_position(const PixelSample& sample, int count);
 
 /// The colour of the pixel whose centre is at viewport position (x, y) (see primary_ray).
