@@ -22,6 +22,17 @@ constexpr std::size_t kRingBytes = std::size_t{1} << 20;
 constexpr int kMaxSpins = 4096;
 constexpr int kMinSpins = 16;
 constexpr int kYieldEvery = 64;
+// Where this process may run on one CPU alone (taskset, a one-CPU container), both sides share it: a
+// wait yields it to the other side at once, up to this many times before it sleeps (a wake-up through
+// the pipe costs a system call on each side).
+constexpr int kYieldsBeforeSleep = 64;
+
+// Whether this process may run on one CPU only.
+bool on_one_cpu() {
+    cpu_set_t cpus;
+    CPU_ZERO(&cpus);
+    return sched_getaffinity(0, sizeof cpus, &cpus) == 0 && CPU_COUNT(&cpus) <= 1;
+}
 
 inline void cpu_relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -60,7 +71,8 @@ ChannelPair make_channel_pair() {
     return pair;
 }
 
-Channel::Channel(const ChannelFds& fds, bool checker_side) : wake_in_(fds.wake_in), wake_out_(fds.wake_out) {
+Channel::Channel(const ChannelFds& fds, bool checker_side)
+    : wake_in_(fds.wake_in), wake_out_(fds.wake_out), one_cpu_(on_one_cpu()) {
     struct stat status {};
     if (fstat(fds.memory, &status) != 0 || static_cast<std::size_t>(status.st_size) < kMemoryBytes)
         throw LinkError("the link's shared memory is missing or too small");
@@ -98,15 +110,23 @@ bool Channel::can_read() const { return other_position(in_->written, read_, true
 bool Channel::can_write() const { return written_ - other_position(out_->read, written_, false) < kRingBytes; }
 
 void Channel::wait_until(std::atomic<std::uint32_t>& sleeping, bool (Channel::*ready)() const) {
-    for (int i = 0; i < spins_; ++i) {
-        if ((this->*ready)()) {
-            spins_ = std::min(spins_ * 2, kMaxSpins);
-            return;
+    if (one_cpu_) {
+        // Spinning cannot end while the other side waits for this very CPU: hand it over at once.
+        for (int i = 0; i < kYieldsBeforeSleep; ++i) {
+            if ((this->*ready)()) return;
+            sched_yield();
         }
-        if (i % kYieldEvery == kYieldEvery - 1) sched_yield();
-        else cpu_relax();
+    } else {
+        for (int i = 0; i < spins_; ++i) {
+            if ((this->*ready)()) {
+                spins_ = std::min(spins_ * 2, kMaxSpins);
+                return;
+            }
+            if (i % kYieldEvery == kYieldEvery - 1) sched_yield();
+            else cpu_relax();
+        }
+        spins_ = std::max(spins_ / 2, kMinSpins);
     }
-    spins_ = std::max(spins_ / 2, kMinSpins);
     for (;;) {
         sleeping.store(1, std::memory_order_seq_cst);
         if ((this->*ready)()) {

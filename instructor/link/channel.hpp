@@ -69,6 +69,7 @@ class Channel {
     std::uint64_t written_ = 0; // our position in out_, kept here: the shared copy may be forged
     std::uint64_t read_ = 0;    // our position in in_
     int spins_ = 256;           // how long to spin before sleeping (adapts, channel.cpp)
+    bool one_cpu_ = false;      // this process may run on one CPU only: yield instead of spinning
 };
 
 } // namespace whitted::link

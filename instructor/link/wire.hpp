@@ -55,8 +55,8 @@ class FrameReader {
     void fill(std::size_t bytes); // until `bytes` bytes are buffered
     Channel& channel_;
     std::size_t max_bytes_;
-    std::vector<std::byte> buffer_;
-    std::size_t start_ = 0;
+    std::vector<std::byte> buffer_; // bytes [start_, end_) are received and not yet read
+    std::size_t start_ = 0, end_ = 0;
 };
 
 /// Appends values to a payload.

@@ -69,7 +69,7 @@ void expect_matches_reference(const ImageCheck& check) {
     settings.max_depth = loaded.data.max_depth;
     settings.samples_per_pixel = loaded.data.samples_per_pixel;
     const Scene scene(std::move(loaded.data), nullptr, check.stage >= stage_number(Stage::bvh) ? BvhChoice::lab : BvhChoice::framework);
-    Image rendered = render(scene, settings, 2).image;
+    Image rendered = render(scene, settings, 1).image;
 
     if (const char* update = std::getenv("WHITTED_UPDATE_REFERENCES"); update && std::string(update) == "1") {
         std::filesystem::create_directories(reference_file.parent_path());
