@@ -5,8 +5,9 @@
 #   bash scripts/classroom-check.sh 3 unit        lab 3's public tests, except its image test
 #   bash scripts/classroom-check.sh 3 image       lab 3's image test; it counts only once lab 3's unit tests pass
 #   bash scripts/classroom-check.sh integration   the whole renderer's tests; they count only once every lab's unit tests pass
-# It exits 0 when the step passes (the workflow then gives the step's points)
-# and builds only what the step needs, in build/ (BUILD_DIR), the folder make uses.
+# It exits 0 when the step passes (the workflow then gives the step's points),
+# 1 when it fails, 2 when it is asked wrongly, and builds only what the step
+# needs, in build/ (BUILD_DIR), the folder make uses.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
@@ -29,7 +30,7 @@ build() {
     local log
     log=$(mktemp)
     if ! cmake --build "$build" -j"$jobs" ${1:+--target "$1"} > "$log" 2>&1; then
-        grep -E "error|Error" "$log" | head -40
+        grep -E "error|Error" "$log" | sed -n '1,40p' # sed reads to the end: head would stop grep with SIGPIPE (exit 141)
         rm -f "$log"
         echo "classroom-check: the build${1:+ of $1} failed (the first errors are above; make shows them all)" >&2
         exit 1
@@ -55,10 +56,10 @@ case "${1:-}" in
         build
         if ! units=$(unit_tests "[0-9]+" 2>&1); then
             echo "classroom-check: the integration tests count only once every lab's unit tests pass; these fail:" >&2
-            printf '%s\n' "$units" | sed -n 's/^[[:space:]]*[0-9]* - \(lab[0-9]*\.[^ ]*\).*/  \1/p' | head -20 >&2
+            printf '%s\n' "$units" | sed -n 's/^[[:space:]]*[0-9]* - \(lab[0-9]*\.[^ ]*\).*/  \1/p' | sed -n '1,20p' >&2
             exit 1
         fi
-        ctest --test-dir "$build" -L '^integration$' --no-tests=error --output-on-failure -j"$jobs"
+        ctest --test-dir "$build" -L '^integration$' --no-tests=error --output-on-failure -j"$jobs" || exit 1
         ;;
     *)
         [ $# -eq 2 ] && [[ "$1" =~ ^[0-9]+$ ]] && [[ "$2" =~ ^(unit|image)$ ]] || { echo "$usage" >&2; exit 2; }
@@ -67,13 +68,13 @@ case "${1:-}" in
             { echo "classroom-check: there is no lab $lab (framework/include/whitted/lab_table.hpp lists the labs)" >&2; exit 2; }
         build "lab$lab"
         case "$2" in
-            unit) unit_tests "$lab" --output-on-failure ;;
+            unit) unit_tests "$lab" --output-on-failure || exit 1 ;;
             image)
                 if ! unit_tests "$lab" > /dev/null 2>&1; then
                     echo "classroom-check: lab $lab's image test counts only once its unit tests pass (bash scripts/classroom-check.sh $lab unit shows which fail)" >&2
                     exit 1
                 fi
-                ctest --test-dir "$build" -R "^lab$lab\.Lab${lab}Image\." --no-tests=error --output-on-failure -j"$jobs"
+                ctest --test-dir "$build" -R "^lab$lab\.Lab${lab}Image\." --no-tests=error --output-on-failure -j"$jobs" || exit 1
                 ;;
         esac
         ;;

@@ -30,6 +30,13 @@ namespace {
 namespace fs = std::filesystem;
 using namespace grade;
 
+// A test's wall clock: this many seconds per CPU second of its limit (a machine busy enough to slow a test down
+// ten times stops nothing), plus the shortest idle time.
+constexpr double kWallPerCpuSecond = 10.0;
+// A test that uses no CPU for this long is hung, however short its CPU limit (a busy machine still gives a
+// running program some CPU within a fraction of a second).
+constexpr double kShortestIdleSeconds = 2.0;
+
 struct GradeOptions {
     std::string submission;
     std::string out = "grading";
@@ -134,8 +141,11 @@ int run_grade(const GradeOptions& options) {
     fs::remove(setup.out / "results.json");
     fs::remove(setup.out / "report.html");
     setup.allow_exposed_answers = options.allow_exposed_answers;
-    setup.test_limits.wall_seconds = options.timeout;
-    setup.test_limits.cpu_seconds = 2 * options.timeout; // the image tests render with two threads
+    // The verdict is CPU time, which a machine's load does not change; a test that sleeps is caught by using no CPU
+    // for as long; the wall clock, far beyond both, only ends what neither catches (process_runner.hpp).
+    setup.test_limits.cpu_seconds = options.timeout;
+    setup.test_limits.idle_seconds = std::max(options.timeout, kShortestIdleSeconds);
+    setup.test_limits.wall_seconds = kWallPerCpuSecond * options.timeout + kShortestIdleSeconds;
     setup.test_limits.address_space = static_cast<std::size_t>(options.memory_mb) << 20;
     setup.test_limits.file_size = 64 << 20;
     setup.max_processes = options.max_processes;
@@ -213,7 +223,8 @@ Command add_grade_command(CLI::App& app) {
         ->check(CLI::ExistingDirectory);
     command->add_option("--rubric", options->rubric, "Rubric file (default: <instructor tree>/instructor/rubric.json)")->check(CLI::ExistingFile);
     command->add_option("-j,--jobs", options->jobs, "Lab files compiled at once (default 2)")->check(CLI::Range(1, 64));
-    command->add_option("--timeout", options->timeout, "Wall-clock seconds per test; CPU time may be twice that (default 20)")
+    command->add_option("--timeout", options->timeout, "CPU seconds per test, for the student's code and the checker each; a test whose programs use no CPU for as long "
+                        "(asleep) also times out (default 20)")
         ->check(CLI::Range(0.5, 3600.0));
     command->add_option("--budget", options->budget,
                         "Wall-clock seconds for the whole grading: tests not started by then count as timed out, and "

@@ -264,8 +264,11 @@ private:
         for (const std::size_t t : order) {
             const Rule* rule = run.plan.rule_of_test[t];
             grade_test(run, t, rule ? unmet_prerequisite(*rule, finished_) : std::nullopt, passed);
+            // A timeout costs its own test alone: the tests that need this one's rule still run (a failed answer
+            // skips them; a slow one may be the machine's doing, and the other tests stand on their own).
             const Status status = run.result.tests[t].outcome.status;
-            if (rule && status != Status::passed) finished_[run.lab->lab + ":" + rule->id].push_back({run.names[t], status});
+            if (rule && status != Status::passed && status != Status::timeout)
+                finished_[run.lab->lab + ":" + rule->id].push_back({run.names[t], status});
         }
         if (const std::optional<std::string> change = relied_on_.first_change(relied_on_files(setup_, kit_)))
             throw GraderFailure("while " + run.lab->lab + " was tested, a file the grader relies on changed: " + *change +

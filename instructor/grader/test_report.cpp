@@ -1,10 +1,13 @@
 #include "grader/test_report.hpp"
+
+#include <cstdio>
 #include "grader/submission.hpp"
 #include "grader/text.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <csignal>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -123,6 +126,18 @@ std::string what_the_code_printed(const ProcessRun& worker, const Limits& limits
     return "--- what your code printed ---\n" + first_lines(printed, kPrintedLines);
 }
 
+// Whether the run was ended by its CPU limit: SIGXCPU, or SIGKILL at the hard limit when SIGXCPU was caught.
+bool out_of_cpu(const ProcessRun& run, const Limits& limits) {
+    return run.end == ProcessRun::End::signalled &&
+           (run.signal == SIGXCPU || (run.signal == SIGKILL && limits.cpu_seconds > 0 && run.cpu_seconds >= limits.cpu_seconds));
+}
+
+std::string cpu_limit_text(const Limits& limits) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", limits.cpu_seconds);
+    return std::string("used more than ") + seconds + " s of CPU time and was killed";
+}
+
 } // namespace
 
 void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& limits, const std::filesystem::path& report_file) {
@@ -130,9 +145,9 @@ void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& lim
     if (run.end == ProcessRun::End::timed_out) {
         outcome.status = Status::timeout;
         outcome.message = describe(run, limits);
-    } else if (run.end == ProcessRun::End::signalled && run.signal == SIGXCPU) {
+    } else if (out_of_cpu(run, limits)) {
         outcome.status = Status::timeout;
-        outcome.message = "used more than " + std::to_string(static_cast<long>(limits.cpu_seconds)) + " s of CPU time and was killed";
+        outcome.message = cpu_limit_text(limits);
     } else if (run.end == ProcessRun::End::signalled && run.output.find(kNotImplemented) != std::string::npos) {
         outcome.status = Status::not_implemented; // thrown where nothing caught it: std::terminate
         outcome.message = not_implemented_line(run.output);
@@ -169,9 +184,12 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
     if (checker.end == ProcessRun::End::timed_out || worker.end == ProcessRun::End::timed_out) {
         outcome.status = Status::timeout;
         outcome.message = describe(worker.end == ProcessRun::End::timed_out ? worker : checker, limits);
-    } else if (worker.end == ProcessRun::End::signalled && worker.signal == SIGXCPU) {
+    } else if (out_of_cpu(worker, limits)) {
         outcome.status = Status::timeout;
-        outcome.message = "used more than " + std::to_string(static_cast<long>(limits.cpu_seconds)) + " s of CPU time and was killed";
+        outcome.message = "your code " + cpu_limit_text(limits);
+    } else if (out_of_cpu(checker, limits)) {
+        outcome.status = Status::timeout;
+        outcome.message = "the test " + cpu_limit_text(limits) + " (answering your code's calls)";
     } else if (worker.outlived) {
         outcome.status = Status::crash;
         outcome.message = "your code went on running after the test was over (a thread or a process left behind?) and was killed";

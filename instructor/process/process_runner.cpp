@@ -1,12 +1,14 @@
 #include "process/process_runner.hpp"
 #include "process/syscall_filter.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -63,7 +65,8 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
 
 // In the child, between fork and exec: only async-signal-safe calls.
 [[noreturn]] void become_child(const ProcessSpec& spec, char** argv, char** envp, int output_fd, int error_fd,
-                               const int* descriptors, std::size_t descriptor_count, const int* groups, std::size_t group_count) {
+                               const int* descriptors, std::size_t descriptor_count, const int* groups, std::size_t group_count,
+                               pid_t grader) {
     // A session of its own, so also a process group of its own: no controlling terminal, so the program
     // cannot open /dev/tty to write on the grader's terminal or push input into it (TIOCSTI).
     if (setsid() < 0) {
@@ -102,6 +105,9 @@ void set_limit(int resource, rlim_t soft, rlim_t hard) {
             _exit(127);
         }
     }
+    // Nothing outlives the grader, however it ends (SIGKILL included): the kernel kills this program when the
+    // grader dies. Set after the change of user, which clears it; a grader already gone is checked after.
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != grader) _exit(127);
     const int null_fd = open("/dev/null", O_RDONLY);
     if (null_fd >= 0) dup2(null_fd, STDIN_FILENO);
     dup2(output_fd, STDOUT_FILENO);
@@ -172,10 +178,11 @@ Running start_child(const ProcessSpec& spec) {
     }
     r.start = Clock::now();
     r.deadline = r.start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(spec.limits.wall_seconds));
+    const pid_t grader = getpid();
     const pid_t pid = fork();
     if (pid == 0)
         become_child(spec, argv.data(), envp.data(), output[1], start_error[1], spec.descriptors.data(), spec.descriptors.size(),
-                     groups.data(), groups.size());
+                     groups.data(), groups.size(), grader);
     for (const int fd : groups) close(fd);
     close(output[1]);
     close(start_error[1]);
@@ -212,6 +219,67 @@ void finish(Running& r, const ProcessSpec& spec) {
     close(r.start_error_fd);
 }
 
+// One line of /proc/<pid>/stat: the parent and the clock ticks of CPU used (its own and its reaped children's).
+struct ProcStat {
+    pid_t pid = 0, parent = 0;
+    long long ticks = 0;
+};
+
+std::vector<ProcStat> all_processes() {
+    std::vector<ProcStat> processes;
+    DIR* proc = opendir("/proc");
+    if (!proc) return processes;
+    while (const dirent* entry = readdir(proc)) {
+        char* end = nullptr;
+        const long pid = std::strtol(entry->d_name, &end, 10);
+        if (*end != '\0' || pid <= 0) continue;
+        std::ifstream stat_file(std::string("/proc/") + entry->d_name + "/stat");
+        std::string stat;
+        std::getline(stat_file, stat);
+        // The command name (field 2) is in parentheses and may hold spaces: read after the last ')'.
+        const std::size_t close = stat.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream rest(stat.substr(close + 1));
+        std::string field;
+        ProcStat p;
+        p.pid = static_cast<pid_t>(pid);
+        // Fields 3.. : state, ppid, pgrp, session, tty, tpgid, flags, 4 fault counts, utime, stime, cutime, cstime.
+        long long value = 0;
+        rest >> field >> value;
+        p.parent = static_cast<pid_t>(value);
+        for (int i = 5; i <= 13 && rest >> field; ++i) {
+        }
+        for (int i = 14; i <= 17 && rest >> value; ++i) p.ticks += value;
+        processes.push_back(p);
+    }
+    closedir(proc);
+    return processes;
+}
+
+// The CPU seconds each root process and everything it started (still running) have used.
+std::vector<double> cpu_seconds_of_trees(const std::vector<pid_t>& roots) {
+    const std::vector<ProcStat> processes = all_processes();
+    std::map<pid_t, pid_t> parent;
+    for (const ProcStat& p : processes) parent[p.pid] = p.parent;
+    static const double tick = 1.0 / static_cast<double>(sysconf(_SC_CLK_TCK));
+    std::vector<double> seconds(roots.size(), 0.0);
+    for (const ProcStat& p : processes) {
+        // Walk up to a root (bounded: a chain of parents ends at init).
+        pid_t at = p.pid;
+        for (int depth = 0; depth < 64 && at > 1; ++depth) {
+            const auto root = std::find(roots.begin(), roots.end(), at);
+            if (root != roots.end()) {
+                seconds[static_cast<std::size_t>(root - roots.begin())] += static_cast<double>(p.ticks) * tick;
+                break;
+            }
+            const auto up = parent.find(at);
+            if (up == parent.end()) break;
+            at = up->second;
+        }
+    }
+    return seconds;
+}
+
 // Runs the programs at once; program i with a leader (leaders[i] >= 0) is killed
 // `linger_seconds` after its leader ended.
 std::vector<ProcessRun> run_all(const std::vector<ProcessSpec>& specs, const std::vector<int>& leaders, double linger_seconds) {
@@ -223,9 +291,36 @@ std::vector<ProcessRun> run_all(const std::vector<ProcessSpec>& specs, const std
     for (const int fd : handed) close(fd);
     std::vector<std::optional<Clock::time_point>> ended(specs.size());
     const auto linger = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(linger_seconds));
+    // Hang detection: the shortest idle limit of the runs, and when their CPU use last grew.
+    double idle_limit = 0.0;
+    for (const ProcessSpec& spec : specs)
+        if (spec.limits.idle_seconds > 0 && (idle_limit == 0.0 || spec.limits.idle_seconds < idle_limit)) idle_limit = spec.limits.idle_seconds;
+    double used_before = -1.0;
+    Clock::time_point last_progress = Clock::now(), next_look = Clock::now();
     char buffer[65536];
     for (;;) {
         const Clock::time_point now = Clock::now();
+        if (idle_limit > 0 && now >= next_look) {
+            next_look = now + std::chrono::milliseconds(200);
+            std::vector<pid_t> roots;
+            for (const Running& r : running) roots.push_back(r.reaped ? -1 : r.pid);
+            const std::vector<double> seconds = cpu_seconds_of_trees(roots);
+            double used = 0.0;
+            for (std::size_t i = 0; i < running.size(); ++i) {
+                if (!running[i].reaped) running[i].run.cpu_seconds = std::max(running[i].run.cpu_seconds, seconds[i]);
+                used += running[i].run.cpu_seconds;
+            }
+            if (used != used_before) {
+                used_before = used;
+                last_progress = now;
+            } else if (now - last_progress >= std::chrono::duration<double>(idle_limit)) {
+                for (Running& r : running)
+                    if (!r.reaped && !r.timed_out) {
+                        r.timed_out = r.run.hung = true;
+                        kill(-r.pid, SIGKILL);
+                    }
+            }
+        }
         std::vector<pollfd> polled;
         bool active = false;
         for (std::size_t i = 0; i < running.size(); ++i) {
@@ -246,6 +341,8 @@ std::vector<ProcessRun> run_all(const std::vector<ProcessSpec>& specs, const std
             rusage usage{};
             if (!r.reaped && wait4(r.pid, &r.wait_status, WNOHANG, &usage) == r.pid) {
                 r.run.peak_rss_bytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024; // Linux counts kilobytes
+                r.run.cpu_seconds = std::max(r.run.cpu_seconds, static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                                                                    1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec));
                 r.reaped = true;
                 ended[i] = now;
                 kill(-r.pid, SIGKILL); // whatever it left behind still holds the output open
@@ -422,6 +519,10 @@ std::string describe(const ProcessRun& run, const Limits& limits) {
         return "killed by " + signal_name(run.signal) + (description ? std::string(" (") + description + ")" : "");
     }
     case ProcessRun::End::timed_out:
+        if (run.hung) {
+            std::snprintf(seconds, sizeof seconds, "%g", limits.idle_seconds);
+            return std::string("used no CPU for ") + seconds + " s (asleep, or waiting for something that never came) and was killed";
+        }
         std::snprintf(seconds, sizeof seconds, "%g", limits.wall_seconds);
         return std::string("did not finish within ") + seconds + " s and was killed";
     case ProcessRun::End::failed_to_start: return "could not start: " + run.start_error;

@@ -1,6 +1,13 @@
 // Runs one program in its own process group under resource limits, with a
 // wall-clock timeout that kills the whole group, and captures its output.
 //
+// Time is judged in CPU time where a machine's load must not change the
+// verdict: RLIMIT_CPU ends a program that computes too long, and a run whose
+// programs (with everything they started) all stop using the CPU for
+// `idle_seconds` is ended as hung (a sleep, or a wait for what never comes). A
+// busy machine slows a program down but never stops it using some CPU, so
+// neither limit depends on the load; the wall clock is then only a last resort.
+//
 // Why: a student's code may crash, loop, sleep, eat memory, fill the disk or
 // print without end. None of that may take the grader down or stall it; each
 // ending is told apart so that it can be reported precisely.
@@ -19,6 +26,7 @@ namespace whitted::grade {
 struct Limits {
     double wall_seconds = 10.0;     // real time, then SIGKILL to the whole process group
     double cpu_seconds = 0.0;       // RLIMIT_CPU: SIGXCPU at the limit (all threads count)
+    double idle_seconds = 0.0;      // 0, or: the run is hung once its programs used no CPU for this long
     std::size_t address_space = 0;  // RLIMIT_AS in bytes: allocations beyond it fail
     std::size_t file_size = 0;      // RLIMIT_FSIZE in bytes: SIGXFSZ when a file would grow beyond it
     long processes = 0;             // RLIMIT_NPROC: counts all processes and threads of the user; root ignores it
@@ -53,6 +61,8 @@ struct ProcessRun {
     std::string output; // stdout and stderr interleaved, at most limits.output_bytes
     bool output_truncated = false;
     double seconds = 0.0; // wall clock
+    double cpu_seconds = 0.0; // user and system time of the program and what it started, as last seen alive or reaped
+    bool hung = false;        // End::timed_out because the run used no CPU for Limits::idle_seconds
     std::size_t peak_rss_bytes = 0; // the child's peak resident memory (wait4's ru_maxrss), once reaped
     std::string start_error; // for End::failed_to_start
     bool outlived = false;   // killed because it went on after the first program of run_together ended

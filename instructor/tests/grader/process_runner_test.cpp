@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <unistd.h>
 #include <optional>
 #include <random>
+#include <sstream>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <thread>
@@ -78,6 +80,114 @@ TEST(ProcessRunner, SleepingChildIsKilledAtTheTimeout) {
     const ProcessRun run = run_child({"sleep"}, short_limits());
     EXPECT_EQ(run.end, ProcessRun::End::timed_out);
     EXPECT_LT(run.seconds, 3.0);
+}
+
+// A sleeping child uses no CPU: with an idle limit it is ended as hung long before the wall clock.
+TEST(ProcessRunner, ASleepingChildIsHungOnceItUsedNoCpuForTheIdleLimit) {
+    Limits limits;
+    limits.wall_seconds = 30.0;
+    limits.idle_seconds = 0.5;
+    const ProcessRun run = run_child({"sleep"}, limits);
+    EXPECT_EQ(run.end, ProcessRun::End::timed_out);
+    EXPECT_TRUE(run.hung);
+    EXPECT_LT(run.seconds, 5.0);
+    EXPECT_EQ(describe(run, limits), "used no CPU for 0.5 s (asleep, or waiting for something that never came) and was killed");
+}
+
+// Busy threads beside it slow a computing child down but never stop it using the CPU: it is ended by its
+// CPU limit, not taken for hung, however busy the machine (this process's threads on every core).
+TEST(ProcessRunner, ABusyMachineNeverMakesAComputingChildHung) {
+    std::atomic<bool> stop{false};
+    std::vector<std::thread> busy;
+    for (unsigned i = 0; i < 2 * std::max(1u, std::thread::hardware_concurrency()); ++i)
+        busy.emplace_back([&stop] {
+            volatile unsigned long spin = 0;
+            while (!stop.load(std::memory_order_relaxed)) spin = spin + 1;
+        });
+    Limits limits;
+    limits.wall_seconds = 60.0;
+    limits.cpu_seconds = 1.0;
+    limits.idle_seconds = 0.3;
+    const ProcessRun run = run_child({"loop"}, limits);
+    stop = true;
+    for (std::thread& thread : busy) thread.join();
+    EXPECT_FALSE(run.hung) << run.seconds << " s";
+    ASSERT_EQ(run.end, ProcessRun::End::signalled);
+    EXPECT_EQ(run.signal, SIGXCPU);
+    EXPECT_GE(run.cpu_seconds, 0.9);
+}
+
+// A pair is idle only when both are: the leader asleep while the follower computes is the checker waiting
+// for the worker. Once the follower is gone, the sleeping leader alone is hung.
+TEST(ProcessRunner, APairIsHungOnlyWhenNeitherUsesTheCpu) {
+    Limits computing;
+    computing.wall_seconds = 30.0;
+    computing.cpu_seconds = 1.0;
+    computing.idle_seconds = 0.3;
+    ProcessSpec leader{{MISBEHAVING_CHILD, "sleep"}, {}, {}, computing, {}, {}, false, {}, {}};
+    ProcessSpec follower{{MISBEHAVING_CHILD, "loop"}, {}, {}, computing, {}, {}, false, {}, {}};
+    const auto [slept, looped] = run_pair({leader, follower}, 30.0);
+    ASSERT_EQ(looped.end, ProcessRun::End::signalled);
+    EXPECT_EQ(looped.signal, SIGXCPU);
+    EXPECT_FALSE(looped.hung);
+    EXPECT_EQ(slept.end, ProcessRun::End::timed_out);
+    EXPECT_TRUE(slept.hung);
+    EXPECT_GE(slept.seconds, 0.9) << "hung while the follower still computed";
+}
+
+// Whether `pid` is a process that still runs (not gone, not a zombie).
+bool still_running(pid_t pid) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    if (!std::getline(stat, line)) return false;
+    const std::size_t close = line.rfind(')');
+    return close != std::string::npos && close + 2 < line.size() && line[close + 2] != 'Z';
+}
+
+// The children of `parent`, from /proc.
+std::vector<pid_t> children_of(pid_t parent) {
+    std::vector<pid_t> children;
+    for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::ifstream stat(entry.path() / "stat");
+        std::string line;
+        if (!std::getline(stat, line)) continue;
+        const std::size_t close = line.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream rest(line.substr(close + 2));
+        char state = 0;
+        pid_t ppid = 0;
+        if (rest >> state >> ppid && ppid == parent) children.push_back(static_cast<pid_t>(std::stol(name)));
+    }
+    return children;
+}
+
+// A grader killed with SIGKILL (no handler can run) takes the programs it runs with it.
+TEST(ProcessRunner, ProgramsDieWithTheirGraderEvenWhenItIsKilled) {
+    const pid_t grader = fork();
+    ASSERT_GE(grader, 0);
+    if (grader == 0) {
+        Limits limits;
+        limits.wall_seconds = 60.0;
+        run_process({{MISBEHAVING_CHILD, "sleep"}, {}, {}, limits, {}, {}, false, {}, {}});
+        _exit(0);
+    }
+    std::vector<pid_t> children;
+    for (int i = 0; i < 200 && children.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        children = children_of(grader);
+    }
+    ASSERT_EQ(children.size(), 1u) << "the grader did not start its program";
+    kill(grader, SIGKILL);
+    waitpid(grader, nullptr, 0);
+    bool gone = false;
+    for (int i = 0; i < 200 && !gone; ++i) {
+        gone = !still_running(children.front());
+        if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    EXPECT_TRUE(gone) << "process " << children.front() << " outlived its grader by 2 s";
+    if (!gone) kill(children.front(), SIGKILL);
 }
 
 TEST(ProcessRunner, UnboundedAllocationFailsInsideTheAddressSpaceLimit) {
