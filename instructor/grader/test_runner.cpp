@@ -106,7 +106,7 @@ TestOutcome run_test(const TestProgram& program, const std::string& test_name) {
     const fs::path folder = fresh_folder(program.output / folder_name(test_name));
     auto [checker, worker] = run_checked(program, test_name, folder, program.limits, false);
     // Out of wall time while still using the CPU, within its limit: the machine was too busy to tell. Once more.
-    const auto slowed = [](const ProcessRun& run) { return run.end == ProcessRun::End::timed_out && !run.hung; };
+    const auto slowed = [](const ProcessRun& run) { return run.end == ProcessRun::End::timed_out && !run.hung && !run.out_of_cpu; };
     if (slowed(checker) || slowed(worker)) std::tie(checker, worker) = run_checked(program, test_name, fresh_folder(folder), program.limits, false);
     TestOutcome outcome;
     outcome.lab = program.lab;

@@ -307,8 +307,15 @@ std::vector<ProcessRun> run_all(const std::vector<ProcessSpec>& specs, const std
             const std::vector<double> seconds = cpu_seconds_of_trees(roots);
             double used = 0.0;
             for (std::size_t i = 0; i < running.size(); ++i) {
-                if (!running[i].reaped) running[i].run.cpu_seconds = std::max(running[i].run.cpu_seconds, seconds[i]);
-                used += running[i].run.cpu_seconds;
+                Running& r = running[i];
+                if (!r.reaped) r.run.cpu_seconds = std::max(r.run.cpu_seconds, seconds[i]);
+                used += r.run.cpu_seconds;
+                // RLIMIT_CPU counts each process alone: a program that forks would get the limit once per child.
+                const double limit = specs[i].limits.cpu_seconds;
+                if (!r.reaped && !r.timed_out && limit > 0 && r.run.cpu_seconds > limit) {
+                    r.timed_out = r.run.out_of_cpu = true;
+                    kill(-r.pid, SIGKILL);
+                }
             }
             if (used != used_before) {
                 used_before = used;
@@ -519,6 +526,10 @@ std::string describe(const ProcessRun& run, const Limits& limits) {
         return "killed by " + signal_name(run.signal) + (description ? std::string(" (") + description + ")" : "");
     }
     case ProcessRun::End::timed_out:
+        if (run.out_of_cpu) {
+            std::snprintf(seconds, sizeof seconds, "%g", limits.cpu_seconds);
+            return std::string("used more than ") + seconds + " s of CPU time and was killed";
+        }
         if (run.hung) {
             std::snprintf(seconds, sizeof seconds, "%g", limits.idle_seconds);
             return std::string("used no CPU for ") + seconds + " s (asleep, or waiting for something that never came) and was killed";

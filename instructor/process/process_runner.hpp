@@ -25,7 +25,8 @@ namespace whitted::grade {
 /// Limits for one run; 0 means "no limit" for every field but wall_seconds.
 struct Limits {
     double wall_seconds = 10.0;     // real time, then SIGKILL to the whole process group
-    double cpu_seconds = 0.0;       // RLIMIT_CPU: SIGXCPU at the limit (all threads count)
+    double cpu_seconds = 0.0;       // RLIMIT_CPU: SIGXCPU at the limit (all threads count); with idle_seconds, also
+                                    // the whole tree's: a program and everything it started, killed together
     double idle_seconds = 0.0;      // 0, or: the run is hung once its programs used no CPU for this long
     std::size_t address_space = 0;  // RLIMIT_AS in bytes: allocations beyond it fail
     std::size_t file_size = 0;      // RLIMIT_FSIZE in bytes: SIGXFSZ when a file would grow beyond it
@@ -63,6 +64,7 @@ struct ProcessRun {
     double seconds = 0.0; // wall clock
     double cpu_seconds = 0.0; // user and system time of the program and what it started, as last seen alive or reaped
     bool hung = false;        // End::timed_out because the run used no CPU for Limits::idle_seconds
+    bool out_of_cpu = false;  // End::timed_out because the program and what it started used more than Limits::cpu_seconds
     std::size_t peak_rss_bytes = 0; // the child's peak resident memory (wait4's ru_maxrss), once reaped
     std::string start_error; // for End::failed_to_start
     bool outlived = false;   // killed because it went on after the first program of run_together ended

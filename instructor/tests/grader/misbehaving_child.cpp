@@ -1,5 +1,6 @@
 // A program that misbehaves on request, for the process runner's tests:
 //   misbehaving_child exit N | segfault | abort | loop | sleep | allocate | touch MB | children MB | big-file | spew MB | env NAME | orphan
+//                     | loops N (N children and itself loop, each under its own RLIMIT_CPU)
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -26,6 +27,12 @@ int main(int argc, char** argv) {
         for (;;) counter = counter + 1;
     }
     if (mode == "sleep") std::this_thread::sleep_for(std::chrono::hours(1));
+    if (mode == "loops") {
+        for (int i = 0; i < std::atoi(argument.c_str()); ++i)
+            if (fork() == 0) break;
+        volatile unsigned long counter = 0;
+        for (;;) counter = counter + 1;
+    }
     if (mode == "allocate") {
         std::vector<char*> blocks;
         for (;;) {

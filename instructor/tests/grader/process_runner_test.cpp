@@ -117,6 +117,20 @@ TEST(ProcessRunner, ABusyMachineNeverMakesAComputingChildHung) {
     EXPECT_GE(run.cpu_seconds, 0.9);
 }
 
+// RLIMIT_CPU counts each process alone: a program that forks four looping children would use five times its limit.
+// The runner counts the whole tree and ends it at the limit.
+TEST(ProcessRunner, TheCpuLimitCountsEveryProcessTheProgramStarted) {
+    Limits limits;
+    limits.wall_seconds = 60.0;
+    limits.cpu_seconds = 1.0;
+    limits.idle_seconds = 1.0;
+    const ProcessRun run = run_child({"loops", "4"}, limits);
+    EXPECT_EQ(run.end, ProcessRun::End::timed_out);
+    EXPECT_TRUE(run.out_of_cpu);
+    EXPECT_LT(run.seconds, 10.0);
+    EXPECT_EQ(describe(run, limits), "used more than 1 s of CPU time and was killed");
+}
+
 // A pair is idle only when both are: the leader asleep while the follower computes is the checker waiting
 // for the worker. Once the follower is gone, the sleeping leader alone is hung.
 TEST(ProcessRunner, APairIsHungOnlyWhenNeitherUsesTheCpu) {
