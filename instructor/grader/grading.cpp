@@ -251,7 +251,10 @@ private:
         run.result.title = lab.title;
         run.result.notes = run.plan.notes;
         run.result.tests.resize(run.names.size());
-        if (run.failure) run.result.compile_errors = run.failure->details;
+        if (run.failure) {
+            run.result.compile_errors = run.failure->details;
+            run.result.problem = run.failure->message;
+        }
         return run;
     }
 
@@ -321,7 +324,13 @@ private:
         for (const ScoredTest& test : run.result.tests) {
             run.result.score_cents += test.score_cents;
             run.result.max_cents += test.max_cents;
-            if (test.outcome.status != Status::passed) setup_.progress("  " + test.outcome.name + ": " + std::string(status_label(test.outcome.status)));
+            if (test.outcome.status != Status::passed && !is_lab_wide(run.result, test.outcome))
+                setup_.progress("  " + test.outcome.name + ": " + std::string(status_label(test.outcome.status)));
+        }
+        if (!run.result.problem.empty()) {
+            const auto not_run = std::count_if(run.result.tests.begin(), run.result.tests.end(),
+                                               [&](const ScoredTest& test) { return is_lab_wide(run.result, test.outcome); });
+            setup_.progress("  " + run.result.lab + ": " + run.result.problem + " (" + std::to_string(not_run) + " tests not run)");
         }
         return std::move(run.result);
     }

@@ -47,10 +47,16 @@ struct LabResult {
     std::string title;
     std::vector<ScoredTest> tests; // in the order the program lists them
     std::string compile_errors;    // the compiler's first errors, when the lab did not build
+    std::string problem;           // why none of its tests ran (missing, refused, not built): said once for the lab
     std::vector<std::string> notes; // rubric notes: unmatched tests, unknown names
     long score_cents = 0;
     long max_cents = 0;
 };
+
+/// Whether the outcome is the lab's own problem (LabResult::problem), not one of this test's.
+inline bool is_lab_wide(const LabResult& lab, const TestOutcome& outcome) {
+    return !lab.problem.empty() && outcome.message == lab.problem;
+}
 
 struct GradingResult {
     std::vector<LabResult> labs;

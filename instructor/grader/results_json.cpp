@@ -15,12 +15,14 @@ using nlohmann::ordered_json;
 // Points as a JSON number made from whole hundredths (so 1/3 of a point never appears).
 double points(long cents) { return static_cast<double>(cents) / 100.0; }
 
-std::string test_output(const ScoredTest& test) {
+std::string test_output(const LabResult& lab, const ScoredTest& test) {
     const TestOutcome& o = test.outcome;
     if (is_hidden(o.name))
         return std::string(status_label(student_status(o))) +
                (o.status == Status::passed ? "\n" : "\nThe details of hidden tests are not shown.\n");
     std::string text = std::string(status_label(o.status));
+    // Said once, at the top: not in each of the lab's tests.
+    if (is_lab_wide(lab, o)) return text + ": not run; why is said once for " + lab.lab + ", at the top\n";
     if (!o.message.empty()) text += ": " + o.message;
     text += "\n";
     if (o.image) text += image_summary(*o.image) + "\n";
@@ -82,6 +84,8 @@ std::string results_json(const GradingResult& result, const GradingProblem& prob
         output = "Your submission was not graded: " + problem.message + "\n";
     for (const LabResult& lab : result.labs) output += lab_summary_line(lab, Audience::student) + "\n";
     if (!failed) output += "total: " + format_points(result.score_cents) + " / " + format_points(result.max_cents) + "\n";
+    for (const LabResult& lab : result.labs)
+        if (!lab.problem.empty()) output += "\n" + lab.lab + ": " + lab.problem + "\n" + lab.compile_errors;
     root["output"] = output;
     root["output_format"] = "text";
     root["visibility"] = "visible";
@@ -99,13 +103,12 @@ std::string results_json(const GradingResult& result, const GradingProblem& prob
             entry["score"] = points(test.score_cents);
             entry["max_score"] = points(test.max_cents);
             entry["status"] = o.status == Status::passed ? "passed" : "failed";
-            entry["output"] = test_output(test);
+            entry["output"] = test_output(lab, test);
             entry["output_format"] = "text";
             const std::string shown = std::string(status_name(student_status(o)));
             entry["tags"] = {lab.lab, test.rule.empty() ? "unscored" : test.rule, shown};
             entry["visibility"] = is_hidden(o.name) ? hidden_visibility : "visible";
             entry["extra_data"] = {{"lab", lab.lab}, {"status", shown}, {"image", test.image_test}};
-            if (!lab.compile_errors.empty() && o.status == Status::compile_error) entry["output"] = test_output(test) + "\n" + lab.compile_errors;
             root["tests"].push_back(entry);
         }
     }

@@ -63,6 +63,26 @@ bool searched(const fs::directory_entry& entry) {
     return entry.is_directory(error) && !entry.is_symlink(error) && !name.empty() && name[0] != '.' && name != "__MACOSX";
 }
 
+// Lower case, for comparing names as a person reads them.
+std::string lowered(std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+// The names in `folder` that look like `name` (NN_lab.cpp) but are not it: a browser's "NN_lab (1).cpp", another
+// case, a copy ("NN_lab copy.cpp", "NN_lab-2.cpp"), another extension ("NN_lab.cc", "NN_lab.cpp.txt"). Sorted.
+std::vector<std::string> near_misses(const fs::path& folder, const std::string& name) {
+    const std::string stem = lowered(name.substr(0, name.size() - 4)); // without ".cpp"
+    std::vector<std::string> found;
+    std::error_code error;
+    for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+        const std::string other = it->path().filename().string();
+        if (other != name && other.size() <= 255 && lowered(other).starts_with(stem)) found.push_back(other);
+    }
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
 std::string describe(const LabFolder& place) {
     return (place.shown.empty() ? std::string("the top folder") : place.shown) + " (" + std::to_string(place.files) +
            (place.files == 1 ? " file)" : " files)");
@@ -116,12 +136,22 @@ std::map<std::string, std::string> copy_lab_files(const LabFolder& from, const f
         const std::string shown = from.shown + name;
         std::string content;
         std::error_code error;
+        const bool absent = !fs::exists(fs::symlink_status(from.folder / name, error));
         if (from.files == 0) {
             refused[lab] = "no lab file was found: the grader looks for " + name +
                            " and the other lab files at the top of the submission, in labs/, or one folder down (my-project/labs/)";
-        } else if (!fs::exists(fs::symlink_status(from.folder / name, error))) {
+        } else if (absent) {
             refused[lab] = "the submission has no " + shown;
-        } else {
+        }
+        // A near miss is named, not taken: the grader grades the exact names only, so that no file is graded by a guess.
+        if (absent)
+            if (const std::vector<std::string> misses = near_misses(from.folder, name); !misses.empty()) {
+                std::string listed;
+                for (std::size_t i = 0; i < misses.size() && i < 3; ++i) listed += (i ? ", " : "") + from.shown + misses[i];
+                refused[lab] += "; " + listed + (misses.size() == 1 ? " looks like it: rename it " : " look like it: keep one, named ") +
+                                name + " exactly, and submit again";
+            }
+        if (!absent && !refused.count(lab)) {
             try {
                 content = read_regular_file(from.folder / name, kMaxLabFileBytes);
             } catch (const std::exception& why) {

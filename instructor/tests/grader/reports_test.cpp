@@ -113,6 +113,33 @@ TEST(ResultsJson, HiddenTestsTakeTheVisibilityAsked) {
     }
 }
 
+// A missing lab file (or one that does not compile) is said once, at the top, not in each of the lab's tests.
+TEST(ResultsJson, ALabThatDidNotRunSaysWhyOnce) {
+    GradingResult result;
+    LabResult lab;
+    lab.lab = "03_blinn_phong";
+    lab.title = "Lab 3: Blinn-Phong";
+    lab.problem = "the submission has no labs/03_blinn_phong.cpp";
+    for (const char* name : {"BlinnPhong.One", "BlinnPhong.Two", "HiddenBlinnPhong.Three"}) {
+        TestOutcome missing;
+        missing.name = name;
+        missing.status = Status::missing;
+        missing.message = lab.problem;
+        lab.tests.push_back({missing, "unit", 0, 100});
+    }
+    lab.max_cents = 300;
+    result.labs.push_back(lab);
+    result.max_cents = 300;
+    const std::string text = results_json(result);
+    const nlohmann::json json = nlohmann::json::parse(text);
+    const std::string top = json["output"];
+    EXPECT_NE(top.find("03_blinn_phong: the submission has no labs/03_blinn_phong.cpp\n"), std::string::npos) << top;
+    std::size_t said = 0;
+    for (std::size_t at = text.find("has no labs/03_blinn_phong.cpp"); at != std::string::npos; at = text.find("has no labs/03", at + 1)) ++said;
+    EXPECT_EQ(said, 1u) << text;
+    EXPECT_EQ(json["tests"][0]["output"], "missing: not run; why is said once for 03_blinn_phong, at the top\n");
+}
+
 TEST(HtmlReport, ListsFailuresFirstAndLoadsNothingFromOutside) {
     const std::string html = html_report(sample());
     EXPECT_LT(html.find("HiddenShading.Lambert"), html.find("SpawnRay.Grazing"));
@@ -126,6 +153,7 @@ TEST(HtmlReport, ListsFailuresFirstAndLoadsNothingFromOutside) {
 TEST(ResultsJson, OutputThatIsNotUtf8StillGivesValidJson) {
     GradingResult result = sample();
     result.labs[0].tests[1].outcome.output = "printed \xff\xfe by the student";
+    result.labs[0].problem = "labs/02_shadows.cpp does not compile";
     result.labs[0].compile_errors = "error: \xff";
     const std::string text = results_json(result);
     EXPECT_FALSE(nlohmann::json::parse(text, nullptr, false).is_discarded()) << text;

@@ -130,6 +130,30 @@ TEST_F(Submission, AMissingFileIsNamedWhereTheOthersAre) {
     EXPECT_EQ(text, "// stub\n");
 }
 
+// A browser's "(1)", another case or another extension: the near miss is named with what to do, and not graded
+// (the grader takes the exact names only, so that no file is graded by a guess).
+TEST_F(Submission, ANearMissOfAFileNameIsNamedAndNotTaken) {
+    put("labs", {"01_ray_casting"});
+    std::ofstream(root_ / "labs" / "02_shadows (1).cpp") << "// renamed by a browser\n";
+    std::ofstream(root_ / "labs" / "03_Blinn_Phong.cpp") << "// another case\n";
+    std::ofstream(root_ / "labs" / "03_blinn_phong.cpp.txt") << "// another extension\n";
+    const fs::path stubs = root_.string() + "_stubs", copied = root_.string() + "_copied";
+    fs::create_directories(stubs);
+    for (const std::string& lab : kLabs) std::ofstream(stubs / (lab + ".cpp")) << "// stub\n";
+    const auto refused = copy_lab_files(find_lab_folder(root_, kLabs), stubs, copied, kLabs);
+    std::ifstream copy(copied / "02_shadows.cpp");
+    const std::string text((std::istreambuf_iterator<char>(copy)), std::istreambuf_iterator<char>());
+    fs::remove_all(stubs);
+    fs::remove_all(copied);
+    ASSERT_EQ(refused.size(), 2u);
+    EXPECT_EQ(refused.at("02_shadows"), "the submission has no labs/02_shadows.cpp; labs/02_shadows (1).cpp looks like it: "
+                                        "rename it 02_shadows.cpp exactly, and submit again");
+    EXPECT_EQ(refused.at("03_blinn_phong"), "the submission has no labs/03_blinn_phong.cpp; labs/03_Blinn_Phong.cpp, "
+                                            "labs/03_blinn_phong.cpp.txt look like it: keep one, named 03_blinn_phong.cpp "
+                                            "exactly, and submit again");
+    EXPECT_EQ(text, "// stub\n");
+}
+
 TEST_F(Submission, NoLabFileAnywhereSaysWhereTheGraderLooked) {
     const fs::path stubs = root_.string() + "_stubs", copied = root_.string() + "_copied";
     fs::create_directories(stubs);
