@@ -220,7 +220,7 @@ Command add_grade_all_command(CLI::App& app) {
     command->add_option("--instructor-build", passed["--instructor-build"], "Passed on to grade")->check(CLI::ExistingDirectory);
     command->add_option("--rubric", passed["--rubric"], "Passed on to grade")->check(CLI::ExistingFile);
     command->add_option("-j,--jobs", passed["--jobs"], "Passed on to grade: lab files compiled at once (default 2)")->check(CLI::Range(1, 64));
-    command->add_option("--timeout", passed["--timeout"], "Passed on to grade: seconds per test (default 20)")->check(CLI::Range(0.5, 3600.0));
+    command->add_option("--timeout", passed["--timeout"], "Passed on to grade: CPU seconds per test (default 20)")->check(CLI::Range(0.5, 3600.0));
     command->add_option("--budget", passed["--budget"], "Passed on to grade: seconds per grading (default 1800)")->check(CLI::Range(10.0, 86400.0));
     command->add_option("--memory", passed["--memory"], "Passed on to grade: MiB per test (default 2048)")->check(CLI::Range(64, 1 << 20));
     command->add_option("--max-processes", passed["--max-processes"], "Passed on to grade")->check(CLI::Range(0L, 1L << 20));
