@@ -7,7 +7,9 @@
 #   busy-4   on every CPU, with 4 busy loops beside the grading;
 #   busy-8   with 8 busy loops.
 # The reference must get 100/100 each time, and the mistake the same points and
-# statuses, test by test, each time. Prints how long each grading took.
+# statuses, test by test, each time. Then the grader is killed (SIGTERM, SIGKILL)
+# in the middle of a lab: no checker or worker may be left 2 s later. Prints how
+# long each grading took.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 command -v taskset > /dev/null || { echo "test-grading-stability: needs taskset (util-linux)" >&2; exit 1; }
@@ -74,6 +76,42 @@ else
     echo "FAIL the mistake's grade depends on the load"
     failures=$((failures + 1))
 fi
+
+# Nothing outlives a grading, however it ends: the grader killed with SIGTERM (as `timeout` does in the Gradescope
+# set-up's run_autograder) and with SIGKILL while a lab's tests run leaves no checker and no worker 2 s later.
+for signal in TERM KILL; do
+    # The grading's own folders (TMPDIR: its workers) under $work, so that its programs are told from any other's.
+    mkdir -m 1777 "$work/tmp-$signal"
+    TMPDIR="$work/tmp-$signal" "$whitted" grade "$work/reference/labs" --out "$work/killed-$signal" --jobs "$jobs" -q \
+        "${fence_options[@]}" > "$work/killed-$signal.log" 2>&1 &
+    grader=$!
+    left=""
+    # Until lab 8's image test runs (its checker's report goes to this grading's folder): it takes a second or two.
+    running="gtest_filter=Lab8Image\.StageSceneMatchesTheReference .*$work/killed-$signal/"
+    for ((i = 0; i < 1200; i++)); do
+        pgrep -f "$running" > /dev/null && break
+        sleep 0.05
+    done
+    before=$(pgrep -f "$work/(killed|tmp)-$signal/" | wc -l)
+    if [ "$before" -lt 2 ]; then
+        echo "FAIL killed-$signal: lab 8's image test was not seen running within 60 s"
+        failures=$((failures + 1))
+        kill -KILL "$grader" 2> /dev/null || true
+        continue
+    fi
+    kill -"$signal" "$grader"
+    wait "$grader" 2> /dev/null || true
+    sleep 2
+    left=$(pgrep -af "$work/(killed|tmp)-$signal/" || true)
+    if [ -z "$left" ]; then
+        echo "ok   killed-$signal: $before of its programs ran; none 2 s after SIG$signal of the grader"
+    else
+        echo "FAIL killed-$signal: left running 2 s after SIG$signal of the grader:"
+        printf '  %s\n' "$left"
+        pkill -KILL -f "$work/(killed|tmp)-$signal/" || true
+        failures=$((failures + 1))
+    fi
+done
 
 echo "test-grading-stability: seconds per grading (--timeout 20 --budget 600, --jobs $jobs):"
 printf '  %s\n' "${summary[@]}"
