@@ -85,6 +85,8 @@ std::span<const PointLight> Tracer::lights() const {
 
 Color Tracer::trace(const Ray& ray, int depth, RayKind kind, const Color& weight) const {
     Engine& e = *engine_;
+    if (e.forwarding) [[unlikely]]
+        return e.forwarding->trace(*this, ray, depth, kind, weight);
     if (e.tree) [[unlikely]]
         return e.trace_recorded(*this, ray, depth, kind, weight);
     const Color parent_weight = e.path_weight;
@@ -159,8 +161,12 @@ void Tracer::begin_pixel(const PixelSample& sample) const { engine_->begin_pixel
 Color Tracer::trace_pixel(double x, double y) const { return engine_->trace_sample(*this, pixel_at(x), pixel_at(y), 0, x, y); }
 
 Color Tracer::trace_sample(const PixelSample& sample, double x, double y) const {
+    if (engine_->forwarding) [[unlikely]]
+        return engine_->forwarding->trace_sample(*this, sample, x, y);
     return engine_->trace_sample(*this, sample.x, sample.y, sample.index, x, y);
 }
+
+void Tracer::forward_to(const TraceForwarding* forwarding) { engine_->forwarding = forwarding; }
 
 Color Tracer::Engine::trace_sample(const Tracer& tracer, int px, int py, int index, double x, double y) {
     begin_pixel(px, py, index);

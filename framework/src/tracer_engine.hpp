@@ -20,6 +20,7 @@ struct Tracer::Engine {
     const RenderSettings& settings;
     RayStats& stats;
     RayTree* tree = nullptr;
+    const TraceForwarding* forwarding = nullptr; // where trace() and trace_sample() run, if not here
     Color path_weight{1.0};         // accumulated weight of the ray being traced
     std::uint32_t pixel_rays = 0;   // rays cast so far for the current pixel
     bool pixel_cut_short = false;

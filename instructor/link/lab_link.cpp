@@ -1,5 +1,7 @@
 #include "lab_link.hpp"
 
+#include <bit>
+
 #include "printable.hpp"
 #include "whitted/lab_table.hpp"
 #include "whitted/not_implemented.hpp"
@@ -23,7 +25,7 @@ enum class ExceptionKind : std::uint8_t { not_implemented = 1, std_exception = 2
 bool takes_tracer(Op op) {
     switch (op) {
     case Op::is_lit: case Op::lambert: case Op::blinn_phong: case Op::reflection: case Op::refraction:
-    case Op::fresnel_blend: case Op::light_samples: return true;
+    case Op::fresnel_blend: case Op::light_samples: case Op::tracer_trace: case Op::tracer_trace_sample: return true;
     default: return false;
     }
 }
@@ -44,7 +46,7 @@ constexpr std::array<std::string_view, kLastOp + 1> kFunctionNames{
     "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
     "fresnel_blend", "stratified_sample", "pixel_color", "point_on_light", "light_samples",
     "concentric_disk", "thin_lens_ray", "box_entry", "build_bvh", "bvh_closest_hit", "bvh_occluded",
-    "Scene::lab_bvh", "intersect"};
+    "Scene::lab_bvh", "intersect", "Tracer::trace", "Tracer::trace_sample"};
 constexpr bool every_op_named() {
     for (std::string_view name : kFunctionNames)
         if (name.empty()) return false;
@@ -140,6 +142,8 @@ void Link::Call::tracer(const Tracer& tracer) {
         link_.active_.push_back({handle, &tracer});
         ++pushed_tracers_;
         args_.put(tracer.settings());
+        // One graded lab here: the worker sends its tracer's recursion back (the rest of the labs are here).
+        args_.raw(static_cast<std::uint8_t>(std::popcount(link_.remote_labs_) == 1));
     } else {
         const auto active = std::find_if(link_.active_.rbegin(), link_.active_.rend(),
                                          [&](const ActiveTracer& a) { return a.tracer == &tracer; });
@@ -299,6 +303,7 @@ void Link::say_goodbye() {
 }
 
 bool Link::allowed(Op op, const Tracer* tracer) const {
+    if (is_recursion(op)) return tracer != nullptr; // the framework's, on a tracer this checker lent
     const int lab = lab_of(op);
     if (lab == 0 || (remote_labs_ & lab_bit(lab))) return false; // its code is over there
     int graded = 1;
@@ -324,7 +329,7 @@ void Link::serve(const Frame& frame) {
     std::string message;
     ++depth_;
     try {
-        if (lab_of(op) == 0) fail("a call of unknown function " + std::to_string(static_cast<int>(op)));
+        if (lab_of(op) == 0 && !is_recursion(op)) fail("a call of unknown function " + std::to_string(static_cast<int>(op)));
         if (depth_ > kMaxNesting) fail("calls nested more than " + std::to_string(kMaxNesting) + " deep");
         if (role_ == Role::checker && op != Op::scene_lab_bvh && !takes_tracer(op) && !allowed(op, nullptr))
             fail("the graded lab's code called " + name_of(op) + ", which grading does not answer for it");
@@ -349,6 +354,28 @@ void Link::serve(const Frame& frame) {
     else write_frame(channel_, FrameType::exception, exception_payload(kind, message));
 }
 
+namespace {
+
+// A worker tracer's recursion, run by the checker on the tracer it lent (Call::tracer() encodes which).
+class RecursionInChecker final : public TraceForwarding {
+  public:
+    Color trace(const Tracer& tracer, const Ray& ray, int depth, RayKind kind, const Color& weight) const override {
+        Link::Call call(Link::current(), Op::tracer_trace);
+        call.tracer(tracer);
+        call.args().put(ray), call.args().put(depth), call.args().raw(static_cast<std::uint8_t>(kind)), call.args().put(weight);
+        return call.result<Color>();
+    }
+    Color trace_sample(const Tracer& tracer, const PixelSample& sample, double x, double y) const override {
+        Link::Call call(Link::current(), Op::tracer_trace_sample);
+        call.tracer(tracer);
+        call.args().put(sample.x), call.args().put(sample.y), call.args().put(sample.index), call.args().put(x), call.args().put(y);
+        return call.result<Color>();
+    }
+};
+const RecursionInChecker kRecursionInChecker;
+
+} // namespace
+
 const Tracer& Link::incoming_tracer(Reader& in, Op op) {
     const auto handle = in.get<std::uint64_t>();
     if (role_ == Role::checker) {
@@ -363,6 +390,7 @@ const Tracer& Link::incoming_tracer(Reader& in, Op op) {
     }
     const auto serial = in.get<std::uint64_t>();
     const RenderSettings settings = in.get<RenderSettings>();
+    const bool forward = in.raw<std::uint8_t>() != 0;
     const auto state = in.get<TracerState>();
     const auto held = scenes_.find(serial);
     if (held == scenes_.end()) throw LinkError("a call with a scene this worker does not hold");
@@ -370,6 +398,7 @@ const Tracer& Link::incoming_tracer(Reader& in, Op op) {
     local->settings = settings;
     local->tracer = std::make_unique<Tracer>(*held->second, local->settings, local->stats);
     local->tracer->restore(state);
+    if (forward) local->tracer->forward_to(&kRecursionInChecker);
     active_.push_back({handle, local->tracer.get()});
     local_tracers_.push_back(std::move(local));
     return *local_tracers_.back()->tracer;

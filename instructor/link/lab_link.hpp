@@ -49,8 +49,14 @@ enum class Op : std::uint16_t {
     box_entry, build_bvh, bvh_closest_hit, bvh_occluded,
     scene_lab_bvh,   // the tree lab 10's walk uses: the checker's, so that both sides walk one tree
     intersect_shape, // the framework's own shapes (boxes, cones), tested where the worker cannot see how
+    // The framework's recursion on a tracer the checker lent (TraceForwarding in whitted/tracer.hpp): run in the
+    // checker, which holds every lab but the graded one, so that a lab's call crosses once.
+    tracer_trace, tracer_trace_sample,
 };
-constexpr int kLastOp = static_cast<int>(Op::intersect_shape);
+constexpr int kLastOp = static_cast<int>(Op::tracer_trace_sample);
+
+/// Whether `op` is the framework's recursion (Tracer::trace, trace_sample), which belongs to no lab.
+constexpr bool is_recursion(Op op) { return op == Op::tracer_trace || op == Op::tracer_trace_sample; }
 
 /// The lab (1..kLabCount, from the lab table) whose code answers `op`; 0 for none.
 int lab_of(Op op);

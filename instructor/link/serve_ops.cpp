@@ -159,6 +159,32 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         end_of(in);
         return out.put(point_on_light(light, uv));
     }
+    case Op::tracer_trace: { // the checker runs the recursion on the tracer it lent
+        const Tracer& tracer = link.incoming_tracer(in, op);
+        const Ray ray = in.get<Ray>();
+        const int depth = in.get<int>();
+        const auto kind = in.raw<std::uint8_t>();
+        const Color weight = in.get<Vec3>();
+        end_of(in);
+        if (kind > static_cast<std::uint8_t>(RayKind::refracted)) throw LinkError("a ray of an unknown kind");
+        if (depth < 1) throw std::invalid_argument("trace() was given depth " + std::to_string(depth) + ": an eye ray is at depth 1, each bounce one deeper");
+        const Color color = tracer.trace(ray, depth, static_cast<RayKind>(kind), weight);
+        out.put(tracer.state());
+        return out.put(color);
+    }
+    case Op::tracer_trace_sample: {
+        const Tracer& tracer = link.incoming_tracer(in, op);
+        PixelSample sample;
+        sample.x = in.get<int>();
+        sample.y = in.get<int>();
+        sample.index = in.get<int>();
+        const double x = in.get<double>();
+        const double y = in.get<double>();
+        end_of(in);
+        const Color color = tracer.trace_sample(sample, x, y);
+        out.put(tracer.state());
+        return out.put(color);
+    }
     case Op::light_samples: {
         const Tracer& tracer = link.incoming_tracer(in, op);
         const AreaLight light = in.get<AreaLight>();

@@ -63,6 +63,22 @@ struct TracerState {
     PixelSample sample;            // the pixel sample being traced (its random numbers)
 };
 
+class Tracer;
+
+/// Where a tracer's recursion runs when another process holds the labs it
+/// calls: a grading worker (instructor/link/) sends its tracers' trace() and
+/// trace_sample() to the checker, which holds every other lab's code, so that
+/// a lab's one call to trace() crosses the link once, not once per shading
+/// call inside it. Nothing else uses it.
+class TraceForwarding {
+  public:
+    virtual Color trace(const Tracer& tracer, const Ray& ray, int depth, RayKind kind, const Color& weight) const = 0;
+    virtual Color trace_sample(const Tracer& tracer, const PixelSample& sample, double x, double y) const = 0;
+
+  protected:
+    ~TraceForwarding() = default;
+};
+
 class Tracer {
   public:
     /// A tracer for one thread: `stats` receives this thread's ray counts and
@@ -122,6 +138,8 @@ class Tracer {
     void restore(const TracerState& state) const;
     /// True when this tracer writes a ray tree.
     bool records_tree() const;
+    /// Sends trace() and trace_sample() to `forwarding` from now on (nullptr: traced here). Grading only.
+    void forward_to(const TraceForwarding* forwarding);
 
     /// The recursion's machinery (pixel budget, path weight, ray-tree recording), in tracer.cpp.
     struct Engine;
