@@ -60,8 +60,9 @@ TEST(BuildBvh, EveryBoxInOneLeafAndEveryNodeAroundWhatIsBelow) {
         const std::vector<Aabb> boxes = primitive_boxes(triangle_soup(count, 10.0, count));
         const BvhTree tree = build_bvh(boxes);
         EXPECT_EQ(bvh_tree_error(tree, boxes), "") << count << " boxes";
-        if (count >= 100 && !tree.nodes.empty())
+        if (count >= 100 && !tree.nodes.empty()) {
             EXPECT_EQ(tree.nodes[0].count, 0u) << count << " scattered boxes in one leaf: split the root";
+        }
     }
 }
 
