@@ -416,27 +416,11 @@ void become_subreaper() { prctl(PR_SET_CHILD_SUBREAPER, 1); }
 
 namespace {
 
-// The pids of this process's children, from /proc/<pid>/stat (field 4 is the parent).
+// The pids of this process's children, from /proc/<pid>/stat.
 std::vector<pid_t> children_of(pid_t parent) {
     std::vector<pid_t> children;
-    DIR* proc = opendir("/proc");
-    if (!proc) return children;
-    while (const dirent* entry = readdir(proc)) {
-        char* end = nullptr;
-        const long pid = std::strtol(entry->d_name, &end, 10);
-        if (*end != '\0' || pid <= 0) continue;
-        std::ifstream stat_file(std::string("/proc/") + entry->d_name + "/stat");
-        std::string stat;
-        std::getline(stat_file, stat);
-        // The command name (field 2) is in parentheses and may hold spaces: read after the last ')'.
-        const std::size_t close = stat.rfind(')');
-        if (close == std::string::npos) continue;
-        std::istringstream rest(stat.substr(close + 1));
-        char state = 0;
-        long ppid = 0;
-        if (rest >> state >> ppid && ppid == parent) children.push_back(static_cast<pid_t>(pid));
-    }
-    closedir(proc);
+    for (const ProcStat& process : all_processes())
+        if (process.parent == parent) children.push_back(process.pid);
     return children;
 }
 
