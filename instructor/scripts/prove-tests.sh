@@ -7,11 +7,17 @@
 #   - every catalogued mistake in instructor/tests/mistakes/ is caught by its lab's tests,
 #     and by its public tests alone (a hidden-only catch is a gap in what students can run).
 # Builds in build-proofs/ with -DWHITTED_PROOFS=ON; prints "mistakes caught: N/N".
+# BUILD_DIR=build uses make's build instead (CI, after make test: only the proofs'
+# own programs compile), and turns the proofs off there again at the end.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${BUILD_DIR:-build-proofs}
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
+if [ -f "$build/CMakeCache.txt" ] && grep -q '^WHITTED_PROOFS:BOOL=OFF$' "$build/CMakeCache.txt"; then
+    cmake -S . -B "$build" -DWHITTED_PROOFS=ON > /dev/null
+    trap "cmake -S '$PWD' -B '$(realpath "$build")' -DWHITTED_PROOFS=OFF > /dev/null" EXIT
+fi
 test -f "$build/CMakeCache.txt" || cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DWHITTED_PROOFS=ON > /dev/null
 cmake --build "$build" -j"$jobs" > "$build.log" 2>&1 || { tail -40 "$build.log"; exit 1; }
 
