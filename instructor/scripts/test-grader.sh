@@ -59,7 +59,7 @@ check broken 'for lab in ("01_ray_casting", "04_reflection", "06_fresnel"):
     ok(lab_score(lab) == lab_max(lab), lab + ": " + str(lab_score(lab)) + " of " + str(lab_max(lab)))
 ok(visible_statuses("02_shadows") == {"crash", "skipped"}, "02_shadows: " + str(visible_statuses("02_shadows")))
 ok(statuses("03_blinn_phong") == {"compile_error"}, "03_blinn_phong: " + str(statuses("03_blinn_phong")))
-# A timeout costs its own test only: lab 5's image test runs too (and times out as well).
+# A timeout costs its own test only: the image test of lab 5 runs too (and times out as well).
 ok(visible_statuses("05_refraction") == {"timeout"}, "05_refraction: " + str(visible_statuses("05_refraction")))
 ok(statuses("02_shadows") | statuses("05_refraction") <= {"crash", "timeout", "failed", "skipped"}, "hidden tests: " + str(statuses("02_shadows") | statuses("05_refraction")))
 ok(statuses("integration") == {"skipped"}, "integration: " + str(statuses("integration")))
