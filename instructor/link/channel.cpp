@@ -18,10 +18,12 @@ constexpr std::size_t kRingBytes = std::size_t{1} << 20;
 // Spinning pays while the other side runs on another core; when it does not
 // (more processes than cores), it only delays it. So the spin budget adapts:
 // it doubles after a wait that spinning ended, halves after one that had to
-// sleep, and yields the core now and then.
-constexpr int kMaxSpins = 4096;
+// sleep, and stays short: a spin's CPU time counts against the test, and on a
+// busy machine a long one burned more of it (lab 8's image test: 3 s of CPU
+// idle, over 20 s beside 8 busy loops with 4096 spins and a yield every 64;
+// 10 s with 1024 and no yield).
+constexpr int kMaxSpins = 1024;
 constexpr int kMinSpins = 16;
-constexpr int kYieldEvery = 64;
 // Where this process may run on one CPU alone (taskset, a one-CPU container), both sides share it: a
 // wait yields it to the other side at once, up to this many times before it sleeps (a wake-up through
 // the pipe costs a system call on each side).
@@ -122,8 +124,7 @@ void Channel::wait_until(std::atomic<std::uint32_t>& sleeping, bool (Channel::*r
                 spins_ = std::min(spins_ * 2, kMaxSpins);
                 return;
             }
-            if (i % kYieldEvery == kYieldEvery - 1) sched_yield();
-            else cpu_relax();
+            cpu_relax(); // no yield: on a busy machine a yield hands the core to another program for a whole slice
         }
         spins_ = std::max(spins_ / 2, kMinSpins);
     }
