@@ -142,6 +142,12 @@ std::map<std::string, std::string> copy_lab_files(const LabFolder& from, const f
                            " and the other lab files at the top of the submission, in labs/, or one folder down (my-project/labs/)";
         } else if (absent) {
             refused[lab] = "the submission has no " + shown;
+        } else {
+            try {
+                content = read_regular_file(from.folder / name, kMaxLabFileBytes);
+            } catch (const std::exception& why) {
+                refused[lab] = shown + " " + why.what() + ": it is graded as missing";
+            }
         }
         // A near miss is named, not taken: the grader grades the exact names only, so that no file is graded by a guess.
         if (absent)
@@ -151,13 +157,6 @@ std::map<std::string, std::string> copy_lab_files(const LabFolder& from, const f
                 refused[lab] += "; " + listed + (misses.size() == 1 ? " looks like it: rename it " : " look like it: keep one, named ") +
                                 name + " exactly, and submit again";
             }
-        if (!absent && !refused.count(lab)) {
-            try {
-                content = read_regular_file(from.folder / name, kMaxLabFileBytes);
-            } catch (const std::exception& why) {
-                refused[lab] = shown + " " + why.what() + ": it is graded as missing";
-            }
-        }
         if (refused.count(lab)) content = read_regular_file(stubs / name, kMaxLabFileBytes);
         std::ofstream out(to / name, std::ios::binary | std::ios::trunc);
         out << content;

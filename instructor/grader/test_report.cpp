@@ -1,6 +1,4 @@
 #include "grader/test_report.hpp"
-
-#include <cstdio>
 #include "grader/submission.hpp"
 #include "grader/text.hpp"
 
@@ -127,7 +125,7 @@ std::string what_the_code_printed(const ProcessRun& worker, const Limits& limits
 }
 
 // Whether the run was ended by its CPU limit: SIGXCPU, or SIGKILL at the hard limit when SIGXCPU was caught.
-bool out_of_cpu(const ProcessRun& run, const Limits& limits) {
+bool stopped_by_rlimit_cpu(const ProcessRun& run, const Limits& limits) {
     return run.end == ProcessRun::End::signalled &&
            (run.signal == SIGXCPU || (run.signal == SIGKILL && limits.cpu_seconds > 0 && run.cpu_seconds >= limits.cpu_seconds));
 }
@@ -145,7 +143,7 @@ void classify_run(TestOutcome& outcome, const ProcessRun& run, const Limits& lim
     if (run.end == ProcessRun::End::timed_out) {
         outcome.status = Status::timeout;
         outcome.message = describe(run, limits);
-    } else if (out_of_cpu(run, limits)) {
+    } else if (stopped_by_rlimit_cpu(run, limits)) {
         outcome.status = Status::timeout;
         outcome.message = cpu_limit_text(limits);
     } else if (run.end == ProcessRun::End::signalled && run.output.find(kNotImplemented) != std::string::npos) {
@@ -184,10 +182,10 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
     if (checker.end == ProcessRun::End::timed_out || worker.end == ProcessRun::End::timed_out) {
         outcome.status = Status::timeout;
         outcome.message = describe(worker.end == ProcessRun::End::timed_out ? worker : checker, limits);
-    } else if (out_of_cpu(worker, limits)) {
+    } else if (stopped_by_rlimit_cpu(worker, limits)) {
         outcome.status = Status::timeout;
         outcome.message = "your code " + cpu_limit_text(limits);
-    } else if (out_of_cpu(checker, limits)) {
+    } else if (stopped_by_rlimit_cpu(checker, limits)) {
         outcome.status = Status::timeout;
         outcome.message = "the test " + cpu_limit_text(limits) + " (answering your code's calls)";
     } else if (worker.outlived) {

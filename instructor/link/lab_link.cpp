@@ -1,12 +1,11 @@
 #include "lab_link.hpp"
 
-#include <bit>
-
 #include "printable.hpp"
 #include "whitted/lab_table.hpp"
 #include "whitted/not_implemented.hpp"
 
 #include <array>
+#include <bit>
 
 namespace whitted::link {
 namespace {

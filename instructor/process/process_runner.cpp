@@ -250,9 +250,8 @@ std::vector<ProcStat> all_processes() {
         long long value = 0;
         rest >> field >> value;
         p.parent = static_cast<pid_t>(value);
-        for (int i = 5; i <= 13 && rest >> field; ++i) {
-        }
-        for (int i = 14; i <= 17 && rest >> value; ++i) p.ticks += value;
+        for (int skipped = 0; skipped < 9; ++skipped) rest >> field; // fields 5 to 13
+        for (int i = 0; i < 4 && rest >> value; ++i) p.ticks += value; // fields 14 to 17
         processes.push_back(p);
     }
     closedir(proc);

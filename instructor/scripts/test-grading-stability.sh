@@ -85,7 +85,6 @@ for signal in TERM KILL; do
     TMPDIR="$work/tmp-$signal" "$whitted" grade "$work/reference/labs" --out "$work/killed-$signal" --jobs "$jobs" -q \
         "${fence_options[@]}" > "$work/killed-$signal.log" 2>&1 &
     grader=$!
-    left=""
     # Until lab 8's image test runs (its checker's report goes to this grading's folder): it takes a second or two.
     running="gtest_filter=Lab8Image\.StageSceneMatchesTheReference .*$work/killed-$signal/"
     for ((i = 0; i < 1200; i++)); do

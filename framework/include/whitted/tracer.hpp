@@ -65,11 +65,11 @@ struct TracerState {
 
 class Tracer;
 
-/// Where a tracer's recursion runs when another process holds the labs it
-/// calls: a grading worker (instructor/link/) sends its tracers' trace() and
-/// trace_sample() to the checker, which holds every other lab's code, so that
-/// a lab's one call to trace() crosses the link once, not once per shading
-/// call inside it. Nothing else uses it.
+/// Where a tracer's recursion runs when another program holds the labs it
+/// calls. Only the grader uses it: it runs your lab code in a program of its
+/// own and sends each trace() and trace_sample() your code makes to the
+/// program that holds the other labs, in one message instead of one per
+/// shading call inside it. Your code never needs it.
 class TraceForwarding {
   public:
     virtual Color trace(const Tracer& tracer, const Ray& ray, int depth, RayKind kind, const Color& weight) const = 0;
@@ -138,7 +138,7 @@ class Tracer {
     void restore(const TracerState& state) const;
     /// True when this tracer writes a ray tree.
     bool records_tree() const;
-    /// Sends trace() and trace_sample() to `forwarding` from now on (nullptr: traced here). Grading only.
+    /// Sends trace() and trace_sample() to `forwarding` from now on (nullptr: traced here). The grader's only.
     void forward_to(const TraceForwarding* forwarding);
 
     /// The recursion's machinery (pixel budget, path weight, ray-tree recording), in tracer.cpp.
