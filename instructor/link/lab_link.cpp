@@ -2,10 +2,13 @@
 
 #include "printable.hpp"
 #include "whitted/lab_table.hpp"
+#include "whitted/labs.hpp"
 #include "whitted/not_implemented.hpp"
 
 #include <array>
 #include <bit>
+#include <cmath>
+#include <iterator>
 
 namespace whitted::link {
 namespace {
@@ -45,7 +48,9 @@ constexpr std::array<std::string_view, kLastOp + 1> kFunctionNames{
     "mirror_direction", "reflection", "refracted_direction", "refraction", "fresnel_reflectance",
     "fresnel_blend", "stratified_sample", "pixel_color", "point_on_light", "light_samples",
     "concentric_disk", "thin_lens_ray", "box_entry", "build_bvh", "bvh_closest_hit", "bvh_occluded",
-    "Scene::lab_bvh", "intersect", "Tracer::trace", "Tracer::trace_sample"};
+    "Scene::lab_bvh", "intersect", "Tracer::trace", "Tracer::trace_sample",
+    "stratified_sample", // stratified_cell: the student's code called stratified_sample()
+    "thin_lens_ray"};     // thin_lens_rays: the checker's render called it
 constexpr bool every_op_named() {
     for (std::string_view name : kFunctionNames)
         if (name.empty()) return false;
@@ -323,6 +328,7 @@ void Link::serve(const Frame& frame) {
     }
     const auto op = static_cast<Op>(in.raw<std::uint16_t>());
     const std::size_t tracers_before = active_.size(), locals_before = local_tracers_.size();
+    calls_in_.push_back(op);
     Writer out;
     ExceptionKind kind{};
     std::string message;
@@ -347,6 +353,7 @@ void Link::serve(const Frame& frame) {
         kind = ExceptionKind::unknown;
     }
     --depth_;
+    calls_in_.pop_back();
     active_.resize(tracers_before);
     local_tracers_.resize(locals_before);
     if (kind == ExceptionKind{}) write_frame(channel_, FrameType::reply, out.bytes());
@@ -413,6 +420,99 @@ const Scene& Link::incoming_scene(Reader& in) {
     const auto held = scenes_.find(serial);
     if (held == scenes_.end()) throw LinkError("a call with a scene this worker does not hold");
     return *held->second;
+}
+
+std::optional<StratifiedCell> Link::stratified_cell(int index, int count) {
+    // Where the checker would refuse stratified_sample(), the call goes over and is refused there.
+    if (!calls_in_.empty() && !refused_inside(calls_in_.back(), Op::stratified_cell).empty()) return std::nullopt;
+    const auto known = cells_.find({index, count});
+    if (known != cells_.end()) return known->second;
+    Call call(*this, Op::stratified_cell);
+    call.args().put(index), call.args().put(count);
+    Reader& in = call.send();
+    std::optional<StratifiedCell> cell;
+    if (in.get<bool>()) {
+        cell.emplace();
+        cell->cell = in.get<Vec2>();
+        cell->grid = in.get<Vec2>();
+    }
+    call.done();
+    cells_.emplace(std::pair{index, count}, cell);
+    return cell;
+}
+
+std::optional<StratifiedCell> stratified_cell_of(int index, int count) {
+    // (cell + u) / grid at u = 0 and u = 1/2: grid = (1/2) / their difference, cell = grid x the first.
+    const Vec2 low = stratified_sample(index, count, Vec2(0.0));
+    const Vec2 middle = stratified_sample(index, count, Vec2(0.5));
+    StratifiedCell found;
+    found.grid = Vec2(std::round(0.5 / (middle.x - low.x)), std::round(0.5 / (middle.y - low.y)));
+    found.cell = Vec2(std::round(low.x * found.grid.x), std::round(low.y * found.grid.y));
+    const double largest = 1u << 24;
+    if (!(found.grid.x >= 1.0 && found.grid.x <= largest && found.grid.y >= 1.0 && found.grid.y <= largest &&
+          std::abs(found.cell.x) <= largest && std::abs(found.cell.y) <= largest))
+        return std::nullopt;
+    // The worker's answers must be this program's to the last bit: checked across [0, 1), ends included.
+    constexpr double kNumbers[] = {0.0, 0.5, 0.1, 0.3333333333333333, 0.7071067811865476, 0.123456789,
+                                   0.987654321, 0.2718281828459045, 0.6180339887498949, 0.9999999999999999};
+    constexpr std::size_t kCount = std::size(kNumbers);
+    for (std::size_t i = 0; i < kCount; ++i) {
+        const Vec2 u(kNumbers[i], kNumbers[(i + 3) % kCount]);
+        const Vec2 expected = stratified_sample(index, count, u);
+        const Vec2 computed = found.sample(u);
+        if (computed.x != expected.x || computed.y != expected.y) return std::nullopt;
+    }
+    return found;
+}
+
+std::vector<LensRaysAhead::Query> pixel_samples_from(double x, double y, Vec2 lens_u) {
+    constexpr int kMostSamples = 1024;
+    if (!(std::abs(x) < 1e9 && std::abs(y) < 1e9)) return {};
+    const int px = static_cast<int>(std::floor(x)), py = static_cast<int>(std::floor(y));
+    auto sample = [&](int index) { return PixelSample{px, py, index}; };
+    int k = 0;
+    while (k < kMostSamples && sample_numbers(sample(k), SampleUse::lens) != lens_u) ++k;
+    if (k == kMostSamples) return {};
+    auto query = [&](int index, int count) {
+        const Vec2 place = stratified_sample(index, count, sample_numbers(sample(index), SampleUse::pixel));
+        return LensRaysAhead::Query{px + place.x, py + place.y, sample_numbers(sample(index), SampleUse::lens)};
+    };
+    const LensRaysAhead::Query asked{x, y, lens_u};
+    for (int count = k + 1; count <= kMostSamples; ++count) {
+        if (query(k, count) != asked) continue;
+        std::vector<LensRaysAhead::Query> queries;
+        for (int index = k; index < count; ++index) queries.push_back(query(index, count));
+        return queries;
+    }
+    return {};
+}
+
+std::optional<Ray> Link::thin_lens_ray_ahead(const Camera& camera, double x, double y, Vec2 lens_u) {
+    Writer camera_bytes;
+    camera_bytes.put(camera);
+    LensRaysAhead& ahead = lens_rays_;
+    const LensRaysAhead::Query asked{x, y, lens_u};
+    if (ahead.next < ahead.rays.size() && ahead.queries[ahead.next] == asked && ahead.camera == camera_bytes.bytes())
+        return ahead.rays[ahead.next++];
+    ahead = {};
+    std::vector<LensRaysAhead::Query> queries = pixel_samples_from(x, y, lens_u);
+    if (queries.size() < 2) return std::nullopt;
+    Call call(*this, Op::thin_lens_rays);
+    call.args().put(camera);
+    call.args().put(static_cast<std::uint64_t>(queries.size()));
+    for (const LensRaysAhead::Query& q : queries) call.args().put(q.x), call.args().put(q.y), call.args().put(q.lens_u);
+    Reader& in = call.send();
+    const std::size_t answered = in.count(48);
+    if (answered > queries.size()) fail("a reply to thin_lens_ray() with more rays than were asked for");
+    std::vector<Ray> rays(answered);
+    for (Ray& ray : rays) ray = in.get<Ray>();
+    call.done();
+    if (rays.empty()) return std::nullopt; // the first threw: asked alone, it throws as it should
+    ahead.camera = std::move(camera_bytes.bytes());
+    ahead.queries = std::move(queries);
+    ahead.rays = std::move(rays);
+    ahead.next = 1;
+    return ahead.rays.front();
 }
 
 void Link::check_hit(const Hit& hit, const Scene& scene) {

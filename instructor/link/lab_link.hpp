@@ -28,8 +28,10 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace whitted::link {
@@ -52,8 +54,13 @@ enum class Op : std::uint16_t {
     // The framework's recursion on a tracer the checker lent (TraceForwarding in whitted/tracer.hpp): run in the
     // checker, which holds every lab but the graded one, so that a lab's call crosses once.
     tracer_trace, tracer_trace_sample,
+    // Lab 7's grid cell for (index, count), which the worker turns into stratified_sample()'s answers for
+    // every u: lab 8's light_samples() asks it once per cell instead of once per light point (StratifiedCell).
+    stratified_cell,
+    // Lab 9's thin_lens_ray() for the samples of a pixel at once (LensRaysAhead).
+    thin_lens_rays,
 };
-constexpr int kLastOp = static_cast<int>(Op::tracer_trace_sample);
+constexpr int kLastOp = static_cast<int>(Op::thin_lens_rays);
 
 /// Whether `op` is the framework's recursion (Tracer::trace, trace_sample), which belongs to no lab.
 constexpr bool is_recursion(Op op) { return op == Op::tracer_trace || op == Op::tracer_trace_sample; }
@@ -83,6 +90,52 @@ enum class Role {
 using LabSet = std::uint32_t;
 static_assert(kLabCount < 32, "LabSet holds the labs as bits of 32");
 constexpr LabSet lab_bit(int lab) { return LabSet{1} << lab; }
+
+/// Where stratified_sample(index, count, u) puts every u: (cell + u) / grid, axis by axis, with cell and grid
+/// whole numbers (the column and row of the sample's cell, and the grid's columns and rows).
+///
+/// Why: lab 8's light_samples() calls lab 7's stratified_sample() once per point of an area light, and a
+/// worker has lab 7 only over the link: 1.2 million round trips in lab 8's image test. The checker sends the
+/// cell once per (index, count), found from the reference's own answers and checked against them
+/// (stratified_cell_of()), and the worker computes (cell + u) / grid exactly as the reference does, to the
+/// last bit. Nothing of lab 7 is handed over that a call would not give: the worker asks only where the
+/// graded lab may call stratified_sample(), and a worker of lab 7 never asks (its lab 7 is the student's).
+struct StratifiedCell {
+    Vec2 cell;
+    Vec2 grid;
+    /// The sample for u, as the reference computes it.
+    Vec2 sample(Vec2 u) const { return Vec2((cell.x + u.x) / grid.x, (cell.y + u.y) / grid.y); }
+};
+
+/// The cell of stratified_sample(index, count, .) as this program's stratified_sample() answers, or nothing
+/// when its answers are not (cell + u) / grid for whole numbers (then each sample must be asked for).
+std::optional<StratifiedCell> stratified_cell_of(int index, int count);
+
+/// Checker: the eye rays of the graded lab 9 for the samples of a pixel that come next, asked for in one call.
+///
+/// Why: a render with a thin lens asks thin_lens_ray() once per sample (307,200 times in lab 9's image test),
+/// and each crossing is a round trip, slow on one CPU and slower still on a busy machine. When the asked
+/// sample is sample k of pixel (px, py) as the checker's own pixel_color() and the framework's
+/// sample_numbers() make them, the checker asks for samples k, k + 1, ... of that pixel in one call, and
+/// answers the next calls from them while they are asked in that order with exactly those numbers; anything
+/// else is one call each, as before. The worker runs the student's thin_lens_ray() on each in order, only
+/// earlier: it sees no number it would not have been sent. One that throws ends the batch, and is asked alone.
+struct LensRaysAhead {
+    struct Query {
+        double x, y;
+        Vec2 lens_u;
+        bool operator==(const Query&) const = default;
+    };
+    std::vector<std::byte> camera; // the camera's bytes on the wire
+    std::vector<Query> queries;
+    std::vector<Ray> rays;         // the answers of the first queries
+    std::size_t next = 0;
+};
+
+/// The queries of samples k, k + 1, ... of pixel (px, py) as this program's pixel_color() asks them, when
+/// (x, y, lens_u) is its sample k: x = px + stratified_sample(k, count, sample_numbers(sample, pixel)).x (y
+/// alike) and lens_u = sample_numbers(sample, lens), the count found from them. Nothing when it is none.
+std::vector<LensRaysAhead::Query> pixel_samples_from(double x, double y, Vec2 lens_u);
 
 /// The lab code of the other side threw: rethrown here as what it was.
 struct RemoteError : std::runtime_error {
@@ -133,6 +186,14 @@ class Link {
     /// Checks a hit received for `scene` (its indices) before anything uses it.
     void check_hit(const Hit& hit, const Scene& scene);
 
+    /// Worker: the cell of stratified_sample(index, count, .) from the checker, asked once per (index, count)
+    /// where the graded lab's code may call stratified_sample(); nothing when the checker's lab 7 is not a grid
+    /// of cells. Throws what the checker answers a refused call with.
+    std::optional<StratifiedCell> stratified_cell(int index, int count);
+    /// Checker: thin_lens_ray(camera, x, y, lens_u) of the worker from a batch asked ahead (LensRaysAhead), asking
+    /// for the pixel's next samples when this one starts them; nothing when it must be asked alone.
+    std::optional<Ray> thin_lens_ray_ahead(const Camera& camera, double x, double y, Vec2 lens_u);
+
   private:
     friend class Call;
     struct ActiveTracer {
@@ -163,6 +224,9 @@ class Link {
     std::map<std::uint64_t, std::unique_ptr<Scene>> scenes_;
     std::vector<const Scene*> active_scenes_; // scenes of the calls in progress (checker)
     std::vector<std::unique_ptr<LocalTracer>> local_tracers_; // worker: tracers of the calls it serves
+    std::vector<Op> calls_in_;                                  // the calls this side is serving, innermost last
+    std::map<std::pair<int, int>, std::optional<StratifiedCell>> cells_; // worker: (index, count) -> cell
+    LensRaysAhead lens_rays_;                                   // checker
 };
 
 /// One outgoing call: encode the arguments, send, serve what comes back until

@@ -9,7 +9,11 @@ using link::Link;
 using link::Op;
 
 Vec2 stratified_sample(int index, int count, Vec2 u) {
-    Link::Call call(Link::current(), Op::stratified_sample);
+    Link& link = Link::current();
+    // A worker asks for the sample's cell once and computes every u's sample itself (StratifiedCell).
+    if (link.role() == link::Role::worker && count >= 1)
+        if (const std::optional<link::StratifiedCell> cell = link.stratified_cell(index, count)) return cell->sample(u);
+    Link::Call call(link, Op::stratified_sample);
     call.args().put(index), call.args().put(count), call.args().put(u);
     return call.result<Vec2>();
 }

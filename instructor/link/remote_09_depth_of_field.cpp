@@ -15,7 +15,11 @@ Vec2 concentric_disk(Vec2 u) {
 }
 
 Ray thin_lens_ray(const Camera& camera, double x, double y, Vec2 lens_u) {
-    Link::Call call(Link::current(), Op::thin_lens_ray);
+    Link& link = Link::current();
+    // The checker asks for a pixel's samples at once (LensRaysAhead).
+    if (link.role() == link::Role::checker)
+        if (const std::optional<Ray> ray = link.thin_lens_ray_ahead(camera, x, y, lens_u)) return *ray;
+    Link::Call call(link, Op::thin_lens_ray);
     call.args().put(camera), call.args().put(x), call.args().put(y), call.args().put(lens_u);
     return call.result<Ray>();
 }

@@ -5,6 +5,9 @@
 #include "whitted/labs.hpp"
 #include "whitted/primitive_test_count.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace whitted::link {
 namespace {
 
@@ -24,6 +27,16 @@ void serve_intersect(std::optional<Hit> (*intersect_shape)(const Ray&, const S&,
     end_of(in);
     PrimitiveTestCount::note_test(); // the other side's walk tests a primitive here (lab 10's tests count them)
     out.put(intersect_shape(ray, *s, range));
+}
+
+/// A sample count for stratified_sample(), which a grid of cells needs to be at least 1 (and not beyond what
+/// the grid's arithmetic holds).
+int checked_sample_count(int count) {
+    constexpr int kMostSamples = 1 << 20;
+    if (count < 1 || count > kMostSamples)
+        throw std::invalid_argument("stratified_sample() was given count " + std::to_string(count) +
+                                    ": a pixel or a light has from 1 to " + std::to_string(kMostSamples) + " samples");
+    return count;
 }
 
 /// The tracer and the hit of a shading call, the hit checked against the tracer's scene.
@@ -139,10 +152,19 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
     }
     case Op::stratified_sample: {
         const int index = in.get<int>();
-        const int count = in.get<int>();
+        const int count = checked_sample_count(in.get<int>());
         const Vec2 u = in.get<Vec2>();
         end_of(in);
         return out.put(stratified_sample(index, count, u));
+    }
+    case Op::stratified_cell: { // the checker's lab 7, for a worker's stratified_sample() (StratifiedCell)
+        const int index = in.get<int>();
+        const int count = checked_sample_count(in.get<int>());
+        end_of(in);
+        const std::optional<StratifiedCell> cell = stratified_cell_of(index, count);
+        out.put(cell.has_value());
+        if (cell) out.put(cell->cell), out.put(cell->grid);
+        return;
     }
     case Op::pixel_color: {
         const Tracer& tracer = link.incoming_tracer(in, op);
@@ -239,6 +261,21 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         const Vec2 u = in.get<Vec2>();
         end_of(in);
         return out.put(concentric_disk(u));
+    }
+    case Op::thin_lens_rays: { // the rays of the queries in order, up to the first that throws (LensRaysAhead)
+        const Camera camera = in.get<Camera>();
+        std::vector<LensRaysAhead::Query> queries(in.count(32));
+        for (LensRaysAhead::Query& q : queries) q.x = in.get<double>(), q.y = in.get<double>(), q.lens_u = in.get<Vec2>();
+        end_of(in);
+        std::vector<Ray> rays;
+        rays.reserve(queries.size());
+        try {
+            for (const LensRaysAhead::Query& q : queries) rays.push_back(thin_lens_ray(camera, q.x, q.y, q.lens_u));
+        } catch (const LinkError&) {
+            throw;
+        } catch (...) { // asked again alone, it throws to the checker as it should
+        }
+        return out.put_all(rays);
     }
     case Op::thin_lens_ray: {
         const Camera camera = in.get<Camera>();
