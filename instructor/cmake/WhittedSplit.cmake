@@ -106,6 +106,13 @@ function(whitted_split_programs)
       PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 0 tests\\.[^\n]*\n(.|\n)*which grading does not answer inside it")
   endforeach()
 
+  # A lab 10 the handout allows but the reference is not (a median split, a near-first walk written otherwise):
+  # every test of lab 10, the walk's cost against the framework's among them, passes on it.
+  whitted_lab_object(alternative_10_bvh ${PROJECT_SOURCE_DIR}/instructor/tests/link/median_split_bvh.cpp)
+  whitted_worker(median_split_worker alternative 10_bvh)
+  add_test(NAME split.alternative.median_split COMMAND check_10_bvh --worker=$<TARGET_FILE:median_split_worker> --gtest_brief=1)
+  set_tests_properties(split.alternative.median_split PROPERTIES LABELS "split;lab10" TIMEOUT 600 RUN_SERIAL TRUE)
+
   whitted_checker(check_integration labtests_integration ${WHITTED_LABS})
   whitted_worker(worker_integration_reference reference ${WHITTED_LABS})
   add_test(NAME split.integration.reference COMMAND check_integration --worker=$<TARGET_FILE:worker_integration_reference> --gtest_brief=1)

@@ -49,7 +49,9 @@ TEST(HiddenBuildBvh, TwoFarClustersAndLongSlivers) {
         yours += closest_hit_cost(tree, primitives, ray, Interval{});
         framework += closest_hit_cost(reference, primitives, ray, Interval{});
     }
-    EXPECT_LE(yours.nodes_visited + yours.primitive_tests, 1.5 * (framework.nodes_visited + framework.primitive_tests));
+    // Within 2x of the surface area heuristic's tree: the median split the handout allows costs 1.7x here
+    // (instructor/tests/link/median_split_bvh.cpp), a tree that never splits or splits in the boxes' order far more.
+    EXPECT_LE(yours.nodes_visited + yours.primitive_tests, 2.0 * (framework.nodes_visited + framework.primitive_tests));
 }
 
 TEST(HiddenBvhClosestHit, SpheresOnlyWithRandomRanges) {
