@@ -9,6 +9,7 @@
 #include <bit>
 #include <cmath>
 #include <iterator>
+#include <thread>
 
 namespace whitted::link {
 namespace {
@@ -262,7 +263,11 @@ Frame Link::wait_for_reply() {
         switch (frame.type) {
         case FrameType::reply:
         case FrameType::exception: return frame;
-        case FrameType::call: serve(frame); break;
+        case FrameType::call:
+            serve(frame);
+            // A call the checker refused broke the link: the call it waits on fails now, not when the worker answers.
+            if (role_ == Role::checker && !broken_.empty()) throw LinkError(broken_);
+            break;
         case FrameType::scene:
             if (role_ == Role::checker) fail("the worker sent a scene");
             serve(frame);
@@ -335,6 +340,9 @@ void Link::serve(const Frame& frame) {
     ++depth_;
     try {
         if (lab_of(op) == 0 && !is_recursion(op)) fail("a call of unknown function " + std::to_string(static_cast<int>(op)));
+        // The shortcuts go one way each: cells from the checker's lab 7, a pixel's lens rays from the worker's lab 9.
+        if ((op == Op::stratified_cell && role_ == Role::worker) || (op == Op::thin_lens_rays && role_ == Role::checker))
+            fail("a call of " + name_of(op) + " that only the other side makes");
         if (depth_ > kMaxNesting) fail("calls nested more than " + std::to_string(kMaxNesting) + " deep");
         if (role_ == Role::checker && op != Op::scene_lab_bvh && !takes_tracer(op) && !allowed(op, nullptr))
             fail("the graded lab's code called " + name_of(op) + ", which grading does not answer for it");
@@ -423,6 +431,7 @@ const Scene& Link::incoming_scene(Reader& in) {
 }
 
 std::optional<StratifiedCell> Link::stratified_cell(int index, int count) {
+    std::lock_guard lock(mutex_); // the student's code may call from threads of its own
     // Where the checker would refuse stratified_sample(), the call goes over and is refused there.
     if (!calls_in_.empty() && !refused_inside(calls_in_.back(), Op::stratified_cell).empty()) return std::nullopt;
     const auto known = cells_.find({index, count});
@@ -465,6 +474,13 @@ std::optional<StratifiedCell> stratified_cell_of(int index, int count) {
     return found;
 }
 
+bool LensRaysAhead::Query::operator==(const Query& other) const {
+    return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(other.x) &&
+           std::bit_cast<std::uint64_t>(y) == std::bit_cast<std::uint64_t>(other.y) &&
+           std::bit_cast<std::uint64_t>(lens_u.x) == std::bit_cast<std::uint64_t>(other.lens_u.x) &&
+           std::bit_cast<std::uint64_t>(lens_u.y) == std::bit_cast<std::uint64_t>(other.lens_u.y);
+}
+
 std::vector<LensRaysAhead::Query> pixel_samples_from(double x, double y, Vec2 lens_u) {
     constexpr int kMostSamples = 1024;
     if (!(std::abs(x) < 1e9 && std::abs(y) < 1e9)) return {};
@@ -488,13 +504,19 @@ std::vector<LensRaysAhead::Query> pixel_samples_from(double x, double y, Vec2 le
 }
 
 std::optional<Ray> Link::thin_lens_ray_ahead(const Camera& camera, double x, double y, Vec2 lens_u) {
+    // Only where lab 9 alone is the worker's: the guess asks this program's lab 7, which must be the reference.
+    if (remote_labs_ != lab_bit(stage_number(Stage::depth_of_field))) return std::nullopt;
+    std::lock_guard lock(mutex_);
     Writer camera_bytes;
     camera_bytes.put(camera);
-    LensRaysAhead& ahead = lens_rays_;
+    // A render's threads each trace pixels of their own: a batch a thread.
+    LensRaysAhead& ahead = lens_rays_[std::this_thread::get_id()];
     const LensRaysAhead::Query asked{x, y, lens_u};
-    if (ahead.next < ahead.rays.size() && ahead.queries[ahead.next] == asked && ahead.camera == camera_bytes.bytes())
-        return ahead.rays[ahead.next++];
+    const bool expected = ahead.next < ahead.queries.size() && ahead.queries[ahead.next] == asked &&
+                          ahead.camera == camera_bytes.bytes();
+    if (expected && ahead.next < ahead.rays.size()) return ahead.rays[ahead.next++];
     ahead = {};
+    if (expected) return std::nullopt; // the query that ended its batch by throwing: asked alone, it throws here
     std::vector<LensRaysAhead::Query> queries = pixel_samples_from(x, y, lens_u);
     if (queries.size() < 2) return std::nullopt;
     Call call(*this, Op::thin_lens_rays);

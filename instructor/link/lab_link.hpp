@@ -31,6 +31,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -119,12 +120,15 @@ std::optional<StratifiedCell> stratified_cell_of(int index, int count);
 /// sample_numbers() make them, the checker asks for samples k, k + 1, ... of that pixel in one call, and
 /// answers the next calls from them while they are asked in that order with exactly those numbers; anything
 /// else is one call each, as before. The worker runs the student's thin_lens_ray() on each in order, only
-/// earlier: it sees no number it would not have been sent. One that throws ends the batch, and is asked alone.
+/// earlier; a wrong guess may ask for samples the render then does not trace, made of numbers lab 9 may ask for
+/// itself (sample_numbers(), lab 7). One that throws ends the batch, and is asked alone. Only in lab 9's checker
+/// (its lab 7 the reference), a batch per thread of the render.
 struct LensRaysAhead {
     struct Query {
         double x, y;
         Vec2 lens_u;
-        bool operator==(const Query&) const = default;
+        /// The same numbers, bit for bit (-0 is not 0: a lab's answer may tell them apart).
+        bool operator==(const Query& other) const;
     };
     std::vector<std::byte> camera; // the camera's bytes on the wire
     std::vector<Query> queries;
@@ -226,7 +230,7 @@ class Link {
     std::vector<std::unique_ptr<LocalTracer>> local_tracers_; // worker: tracers of the calls it serves
     std::vector<Op> calls_in_;                                  // the calls this side is serving, innermost last
     std::map<std::pair<int, int>, std::optional<StratifiedCell>> cells_; // worker: (index, count) -> cell
-    LensRaysAhead lens_rays_;                                   // checker
+    std::map<std::thread::id, LensRaysAhead> lens_rays_;        // checker: a batch per thread of the render
 };
 
 /// One outgoing call: encode the arguments, send, serve what comes back until

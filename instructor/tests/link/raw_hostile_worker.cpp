@@ -3,6 +3,7 @@
 // must fail every test it runs with it, and say the link broke.
 // WHITTED_HOSTILE picks the misbehaviour (see the cases below).
 #include "channel.hpp"
+#include "lab_link.hpp"
 #include "wire.hpp"
 
 #include <cstdlib>
@@ -36,6 +37,11 @@ int main() {
             write_frame(channel, FrameType::bye, {});
         } else if (mode == "scene_from_worker") {
             write_frame(channel, FrameType::scene, {});
+        } else if (mode == "wrong_way") {
+            // Asks the checker for a pixel's lens rays, a shortcut only the checker asks a worker for.
+            Writer call;
+            call.raw(static_cast<std::uint16_t>(Op::thin_lens_rays));
+            write_frame(channel, FrameType::call, call.bytes());
         } else if (mode == "exit0") {
             _exit(0);
         } else if (mode == "abort") {
