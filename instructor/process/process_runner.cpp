@@ -353,8 +353,12 @@ std::vector<ProcessRun> run_all(const std::vector<ProcessSpec>& specs, const std
                 r.run.outlived = true;
                 kill(-r.pid, SIGKILL);
             }
-            if (r.output_fd >= 0 && (now >= r.deadline + std::chrono::seconds(1) || (r.reaped && r.run.outlived))) {
-                close(r.output_fd); // a process that left the group still holds the output open: stop listening
+            // A process that left the group (a fork bomb's child in a session of its own) can hold the output open
+            // after the program ended: what the program wrote is read within half a second, then the runner stops
+            // listening, rather than waiting for the wall clock (the grader kills what is left after the run).
+            const bool drained = r.reaped && (r.run.outlived || now >= *ended[i] + std::chrono::milliseconds(500));
+            if (r.output_fd >= 0 && (now >= r.deadline + std::chrono::seconds(1) || drained)) {
+                close(r.output_fd);
                 r.output_fd = -1;
             }
             rusage usage{};

@@ -1,5 +1,5 @@
 // A program that misbehaves on request, for the process runner's tests:
-//   misbehaving_child exit N | segfault | abort | loop | sleep | allocate | touch MB | children MB | big-file | spew MB | env NAME | orphan
+//   misbehaving_child exit N | segfault | abort | loop | sleep | allocate | touch MB | children MB | big-file | spew MB | env NAME | orphan | escaped
 //                     | loops N (N children and itself loop, each under its own RLIMIT_CPU)
 #include <chrono>
 #include <csignal>
@@ -84,6 +84,17 @@ int main(int argc, char** argv) {
             failed += !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
         }
         return failed == 0 ? 0 : 1;
+    }
+    if (mode == "escaped") { // leaves a sleeping child in a session of its own (out of the group) holding the output open
+        const pid_t child = fork();
+        if (child == 0) {
+            setsid();
+            std::this_thread::sleep_for(std::chrono::hours(1));
+            _exit(0);
+        }
+        while (getsid(child) != child) std::this_thread::sleep_for(std::chrono::milliseconds(1)); // out of the group now
+        std::printf("escaped %d\n", static_cast<int>(child));
+        return 0;
     }
     if (mode == "orphan") { // leaves a sleeping child that holds the output open
         if (fork() == 0) std::this_thread::sleep_for(std::chrono::hours(1));

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -249,6 +250,21 @@ TEST(ProcessRunner, ChildrenLeftBehindAreKilledWithTheGroup) {
     EXPECT_EQ(run.end, ProcessRun::End::exited);
     EXPECT_EQ(run.output, "parent done\n");
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0.9);
+}
+
+// A child that left the group (setsid, as a fork bomb's may) keeps the output open after the program ended:
+// the runner reads what the program wrote and returns, instead of waiting for the wall clock.
+TEST(ProcessRunner, AChildThatLeftTheGroupDoesNotHoldTheRunToTheWallClock) {
+    Limits limits;
+    limits.wall_seconds = 30.0;
+    const auto start = std::chrono::steady_clock::now();
+    const ProcessRun run = run_child({"escaped"}, limits);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    int escaped = 0;
+    ASSERT_EQ(std::sscanf(run.output.c_str(), "escaped %d", &escaped), 1) << run.output;
+    kill(escaped, SIGKILL);
+    EXPECT_EQ(run.end, ProcessRun::End::exited);
+    EXPECT_LT(seconds, 3.0);
 }
 
 TEST(ProcessRunner, PeakMemoryOfTheChildIsMeasured) {
