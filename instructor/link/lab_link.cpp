@@ -494,8 +494,10 @@ std::vector<LensRaysAhead::Query> pixel_samples_from(double x, double y, Vec2 le
         return LensRaysAhead::Query{px + place.x, py + place.y, sample_numbers(sample(index), SampleUse::lens)};
     };
     const LensRaysAhead::Query asked{x, y, lens_u};
+    const Vec2 pixel_numbers = sample_numbers(sample(k), SampleUse::pixel); // the count is the unknown: found from x, y
     for (int count = k + 1; count <= kMostSamples; ++count) {
-        if (query(k, count) != asked) continue;
+        const Vec2 place = stratified_sample(k, count, pixel_numbers);
+        if (LensRaysAhead::Query{px + place.x, py + place.y, lens_u} != asked) continue;
         std::vector<LensRaysAhead::Query> queries;
         for (int index = k; index < count; ++index) queries.push_back(query(index, count));
         return queries;
