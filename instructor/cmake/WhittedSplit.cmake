@@ -151,6 +151,13 @@ function(whitted_grading_kit)
   endforeach()
   string(APPEND text "link $<JOIN:$<TARGET_PROPERTY:worker_01_ray_casting_stub,LINK_OPTIONS>,\nlink >\n")
   string(APPEND text "link -pthread\n")
+  # gold, where the toolchain has it, links a worker in a third of the time of the default linker (11 workers a
+  # grading: 0.35 s -> 0.12 s each on the project's machine).
+  include(CheckLinkerFlag)
+  check_linker_flag(CXX "-fuse-ld=gold" WHITTED_HAS_GOLD)
+  if(WHITTED_HAS_GOLD)
+    string(APPEND text "link -fuse-ld=gold\n")
+  endif()
   # The framework reads images (skybox faces) with the system's stb_image.
   foreach(flag IN LISTS STB_LDFLAGS)
     string(APPEND text "link ${flag}\n")

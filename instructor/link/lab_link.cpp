@@ -22,6 +22,8 @@ constexpr std::size_t kMaxFromChecker = std::size_t{1} << 28;
 constexpr int kMaxNesting = 4000;       // calls inside calls, both ways together
 constexpr std::size_t kScenesKept = 8;  // scenes the worker holds at once
 constexpr std::size_t kMaxMessage = 2000;
+constexpr std::size_t kMostAnswersAhead = 8; // with one call to the worker
+constexpr std::size_t kCallHeaderBytes = 3;  // [op: 2 bytes][answers ahead: 1 byte] of a call from the checker
 
 enum class ExceptionKind : std::uint8_t { not_implemented = 1, std_exception = 2, unknown = 3, refused = 4 };
 
@@ -38,6 +40,23 @@ std::vector<std::byte> exception_payload(ExceptionKind kind, const std::string& 
     out.raw(kind);
     out.put(message.substr(0, kMaxMessage));
     return std::move(out.bytes());
+}
+
+std::vector<std::byte> bytes_of(const std::string& text) {
+    const auto* first = reinterpret_cast<const std::byte*>(text.data());
+    return {first, first + text.size()};
+}
+
+// The answers ahead of a call from the checker (Call::answers_ahead()).
+std::vector<AnswerAhead> read_answers_ahead(Reader& in) {
+    const auto count = in.raw<std::uint8_t>();
+    if (count > kMostAnswersAhead) throw LinkError("a call with too many answers ahead");
+    std::vector<AnswerAhead> answers(count);
+    for (AnswerAhead& answer : answers) {
+        answer.call = bytes_of(in.get<std::string>());
+        answer.reply = bytes_of(in.get<std::string>());
+    }
+    return answers;
 }
 
 } // namespace
@@ -128,6 +147,7 @@ void Link::fail(const std::string& reason) {
 Link::Call::Call(Link& link, Op op) : link_(link), lock_(link.mutex_), op_(op) {
     if (!link_.broken_.empty()) throw LinkError(link_.broken_);
     args_.raw(static_cast<std::uint16_t>(op));
+    if (link_.role_ == Role::checker) args_.raw(std::uint8_t{0}); // answers ahead: none unless answers_ahead() says
     link_.calls_out_.push_back(op);
 }
 
@@ -165,6 +185,18 @@ void Link::Call::scene(const Scene& scene) {
     if (link_.role_ == Role::checker) {
         link_.active_scenes_.push_back(&scene);
         ++pushed_scenes_;
+    }
+}
+
+void Link::Call::answers_ahead(const std::vector<AnswerAhead>& answers) {
+    if (answers.empty()) return;
+    if (link_.role_ != Role::checker || args_.bytes().size() != kCallHeaderBytes || answers.size() > kMostAnswersAhead)
+        throw std::logic_error("answers ahead go from the checker, before a call's arguments, at most " +
+                               std::to_string(kMostAnswersAhead));
+    args_.bytes()[2] = static_cast<std::byte>(answers.size());
+    for (const AnswerAhead& answer : answers) {
+        args_.put(std::string(reinterpret_cast<const char*>(answer.call.data()), answer.call.size()));
+        args_.put(std::string(reinterpret_cast<const char*>(answer.reply.data()), answer.reply.size()));
     }
 }
 
@@ -216,8 +248,12 @@ Reader& Link::Call::send() {
     } unnest{link_.depth_};
     try {
         if (link_.depth_ > kMaxNesting) link_.fail("calls nested more than " + std::to_string(kMaxNesting) + " deep");
-        write_frame(link_.channel_, FrameType::call, args_.bytes());
-        reply_ = link_.wait_for_reply();
+        if (const AnswerAhead* ahead = link_.answered_ahead(args_.bytes(), tracer_ != nullptr)) {
+            reply_ = Frame{FrameType::reply, ahead->reply};
+        } else {
+            write_frame(link_.channel_, FrameType::call, args_.bytes());
+            reply_ = link_.wait_for_reply();
+        }
     } catch (const LinkError& e) {
         if (link_.role_ == Role::checker) {
             // The innermost call catches the break first: the call the worker was running when it died.
@@ -277,6 +313,13 @@ Frame Link::wait_for_reply() {
     }
 }
 
+const AnswerAhead* Link::answered_ahead(const std::vector<std::byte>& call, bool with_tracer) const {
+    if (role_ != Role::worker || with_tracer || answers_ahead_.empty()) return nullptr;
+    for (const AnswerAhead& answer : answers_ahead_.back())
+        if (answer.call == call) return &answer;
+    return nullptr;
+}
+
 // ---- calls in ---------------------------------------------------------------------------
 
 void Link::serve_until_closed() {
@@ -333,6 +376,7 @@ void Link::serve(const Frame& frame) {
     }
     const auto op = static_cast<Op>(in.raw<std::uint16_t>());
     const std::size_t tracers_before = active_.size(), locals_before = local_tracers_.size();
+    if (role_ == Role::worker) answers_ahead_.push_back(read_answers_ahead(in));
     calls_in_.push_back(op);
     Writer out;
     ExceptionKind kind{};
@@ -362,6 +406,7 @@ void Link::serve(const Frame& frame) {
     }
     --depth_;
     calls_in_.pop_back();
+    if (role_ == Role::worker) answers_ahead_.pop_back();
     active_.resize(tracers_before);
     local_tracers_.resize(locals_before);
     if (kind == ExceptionKind{}) write_frame(channel_, FrameType::reply, out.bytes());

@@ -141,6 +141,21 @@ struct LensRaysAhead {
 /// alike) and lens_u = sample_numbers(sample, lens), the count found from them. Nothing when it is none.
 std::vector<LensRaysAhead::Query> pixel_samples_from(double x, double y, Vec2 lens_u);
 
+/// An answer the checker sends ahead with a call to the worker: a call of an earlier lab's pure function
+/// (no tracer, no scene) as the worker would encode it, and the reply the checker would give it.
+///
+/// Why: lab 6's fresnel_blend() calls mirror_direction(), refracted_direction() and spawn_ray() of labs 4, 5
+/// and 2, which a lab 6 worker has only over the link: four round trips a call, 210,000 in lab 6's image
+/// test. The checker computes the calls the reference itself makes there (fresnel_blend_answers()) with its
+/// own labs, through the very code that answers a real call (serve_op()), and the worker answers a call with
+/// exactly these bytes from them, during that served call only; any other call crosses as before. Nothing is
+/// handed over that the call would not give: only functions of labs before the graded one, where the graded
+/// lab may call them, on numbers the worker was sent.
+struct AnswerAhead {
+    std::vector<std::byte> call;  // [op][arguments], as Link::Call encodes them in the worker
+    std::vector<std::byte> reply; // the reply's payload
+};
+
 /// The lab code of the other side threw: rethrown here as what it was.
 struct RemoteError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -197,6 +212,9 @@ class Link {
     /// Checker: thin_lens_ray(camera, x, y, lens_u) of the worker from a batch asked ahead (LensRaysAhead), asking
     /// for the pixel's next samples when this one starts them; nothing when it must be asked alone.
     std::optional<Ray> thin_lens_ray_ahead(const Camera& camera, double x, double y, Vec2 lens_u);
+    /// Checker: the calls of earlier labs that the reference's fresnel_blend(tracer, hit, wo, .) makes, answered
+    /// ahead (AnswerAhead); none where those labs are not this program's or not the graded lab's to call.
+    std::vector<AnswerAhead> fresnel_blend_answers(const Tracer& tracer, const Hit& hit, const Vec3& wo);
 
   private:
     friend class Call;
@@ -211,6 +229,8 @@ class Link {
     void serve(const Frame& call);
     void fail(const std::string& reason);
     bool allowed(Op op, const Tracer* tracer) const;
+    /// Worker: the answer sent ahead for a call made of exactly these bytes, during the call served now.
+    const AnswerAhead* answered_ahead(const std::vector<std::byte>& call, bool with_tracer) const;
 
     Role role_;
     Channel channel_;
@@ -231,6 +251,7 @@ class Link {
     std::vector<Op> calls_in_;                                  // the calls this side is serving, innermost last
     std::map<std::pair<int, int>, std::optional<StratifiedCell>> cells_; // worker: (index, count) -> cell
     std::map<std::thread::id, LensRaysAhead> lens_rays_;        // checker: a batch per thread of the render
+    std::vector<std::vector<AnswerAhead>> answers_ahead_;       // worker: those of each call it serves, innermost last
 };
 
 /// One outgoing call: encode the arguments, send, serve what comes back until
@@ -243,6 +264,8 @@ class Link::Call {
     Call& operator=(const Call&) = delete;
 
     Writer& args() { return args_; }
+    /// Checker: sends `answers` ahead with this call (AnswerAhead); before any argument.
+    void answers_ahead(const std::vector<AnswerAhead>& answers);
     /// Encodes a tracer argument; its state comes back with the reply.
     void tracer(const Tracer& tracer);
     /// Encodes a scene argument (sending the scene first if the other side lacks it).

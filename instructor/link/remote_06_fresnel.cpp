@@ -15,7 +15,9 @@ double fresnel_reflectance(double cos_theta_i, double eta_i, double eta_t) {
 }
 
 Color fresnel_blend(const Tracer& tracer, const Hit& hit, const Vec3& wo, int depth) {
-    Link::Call call(Link::current(), Op::fresnel_blend);
+    Link& link = Link::current();
+    Link::Call call(link, Op::fresnel_blend);
+    call.answers_ahead(link.fresnel_blend_answers(tracer, hit, wo));
     call.tracer(tracer), call.args().put(hit), call.args().put(wo), call.args().put(depth);
     return call.result<Color>();
 }

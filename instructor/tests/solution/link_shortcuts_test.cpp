@@ -5,6 +5,9 @@
 // against points that are not the reference's. LensRaysAhead: the checker asks for the eye rays of the
 // samples its own pixel_color() traces next; a wrong guess only costs speed, but every guess that is right is
 // what makes lab 9's image test fast, so the guesses are checked against what pixel_color() really traces.
+// AnswerAhead: the checker's answers to the calls fresnel_blend() makes of labs 2, 4 and 5 are the reference's,
+// and are sent only where those labs are earlier than the graded one and this program's.
+#include "channel.hpp"
 #include "lab_link.hpp"
 
 #include "whitted/labs.hpp"
@@ -15,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <random>
+#include <unistd.h>
 #include <vector>
 
 using namespace whitted;
@@ -86,6 +90,96 @@ TEST(LinkShortcuts, ThePixelsSamplesAreThoseItsPixelColorTraces) {
 TEST(LinkShortcuts, NoGuessForNumbersThatAreNoPixelsSample) {
     EXPECT_TRUE(link::pixel_samples_from(10.5, 3.5, Vec2(0.5, 0.5)).empty());
     EXPECT_TRUE(link::pixel_samples_from(1e300, 3.5, Vec2(0.5, 0.5)).empty());
+}
+
+// A channel's descriptors, closed at the end (the memory stays mapped by the links made on it).
+struct OpenChannel {
+    link::ChannelPair pair = link::make_channel_pair();
+    ~OpenChannel() {
+        for (const link::ChannelFds& side : {pair.checker, pair.worker})
+            for (const int fd : {side.memory, side.wake_in, side.wake_out}) ::close(fd);
+    }
+};
+
+// A glass sphere's material (index 0) in a scene, and a hit on it from outside or from inside.
+struct GlassHit {
+    Scene scene;
+    Hit hit;
+    static SceneData glass() {
+        SceneData data;
+        data.camera = Camera::create(Point3(0.0, 0.0, 5.0), Point3(0.0), Vec3(0.0, 1.0, 0.0), 40.0, 64, 48);
+        Material material;
+        material.transmittance = 0.9, material.ior = 1.5;
+        data.materials.push_back(material);
+        return data;
+    }
+    explicit GlassHit(bool front_face) : scene(glass()) {
+        // The unit sphere at the origin, hit from outside at (0, 0, 1) by a ray from (0.3, 0.2, 5), or from the
+        // inside there by a ray from the centre: the normal faces the ray either way.
+        hit.front_face = front_face;
+        hit.point = Point3(0.0, 0.0, 1.0);
+        hit.normal = hit.geometric_normal = Vec3(0.0, 0.0, front_face ? 1.0 : -1.0);
+    }
+};
+
+// What each answer ahead says: the reference's result for its call, decoded as the worker decodes a reply.
+void expect_reference_answers(const std::vector<link::AnswerAhead>& answers) {
+    for (const link::AnswerAhead& answer : answers) {
+        std::vector<std::byte> call(answer.call.begin() + 2, answer.call.end());
+        link::Reader in(call), reply(answer.reply);
+        std::uint16_t op;
+        std::memcpy(&op, answer.call.data(), sizeof op);
+        if (op == static_cast<std::uint16_t>(link::Op::mirror_direction)) {
+            const Vec3 wo = in.get<Vec3>(), n = in.get<Vec3>();
+            EXPECT_EQ(reply.get<Vec3>(), mirror_direction(wo, n));
+        } else if (op == static_cast<std::uint16_t>(link::Op::refracted_direction)) {
+            const Vec3 wo = in.get<Vec3>(), n = in.get<Vec3>();
+            const double eta_i = in.get<double>(), eta_t = in.get<double>();
+            EXPECT_EQ(reply.get<std::optional<Vec3>>(), refracted_direction(wo, n, eta_i, eta_t));
+        } else {
+            ASSERT_EQ(op, static_cast<std::uint16_t>(link::Op::spawn_ray));
+            const Hit hit = in.get<Hit>();
+            const Vec3 direction = in.get<Vec3>();
+            const Ray expected = spawn_ray(hit, direction), answered = reply.get<Ray>();
+            EXPECT_EQ(answered.origin, expected.origin);
+            EXPECT_EQ(answered.direction, expected.direction);
+        }
+        EXPECT_TRUE(in.at_end() && reply.at_end());
+    }
+}
+
+TEST(LinkShortcuts, FresnelBlendsCallsAreAnsweredAheadWithTheReferencesAnswers) {
+    RenderSettings settings;
+    RayStats stats;
+    for (const bool front_face : {true, false}) {
+        const GlassHit glass(front_face);
+        Tracer tracer(glass.scene, settings, stats);
+        const OpenChannel channel;
+        link::Link checker(link::Role::checker, channel.pair.checker, link::lab_bit(6));
+        // From outside, the mirror and refracted directions and their rays; from inside at 60 degrees, past the
+        // critical angle of 1.5 (41.8 degrees): total internal reflection, no refracted ray.
+        const Vec3 wo = front_face ? glm::normalize(Vec3(0.3, 0.2, 4.0)) : Vec3(std::sqrt(0.75), 0.0, -0.5);
+        const std::vector<link::AnswerAhead> answers = checker.fresnel_blend_answers(tracer, glass.hit, wo);
+        EXPECT_EQ(answers.size(), front_face ? 4u : 3u);
+        expect_reference_answers(answers);
+    }
+}
+
+TEST(LinkShortcuts, NoAnswersAheadOfLabsThatAreTheGradedOnesOrLater) {
+    // Lab 5's checker would hand over lab 5's refracted_direction(); where every lab is the worker's (the
+    // integration tests), the answers would be the reference's, not the student's.
+    RenderSettings settings;
+    RayStats stats;
+    const GlassHit glass(true);
+    Tracer tracer(glass.scene, settings, stats);
+    for (const link::LabSet graded : {link::lab_bit(4), link::lab_bit(5), link::LabSet{0x7fe}}) {
+        const OpenChannel channel;
+        link::Link checker(link::Role::checker, channel.pair.checker, graded);
+        EXPECT_TRUE(checker.fresnel_blend_answers(tracer, glass.hit, Vec3(0.0, 0.0, 1.0)).empty()) << graded;
+    }
+    const OpenChannel channel;
+    link::Link worker(link::Role::worker, channel.pair.worker, 0);
+    EXPECT_TRUE(worker.fresnel_blend_answers(tracer, glass.hit, Vec3(0.0, 0.0, 1.0)).empty());
 }
 
 } // namespace
