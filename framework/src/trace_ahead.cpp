@@ -22,6 +22,7 @@
 #include "lab_call.hpp"
 #include "tracer_engine.hpp"
 
+#include "whitted/engine/remote_queries.hpp"
 #include "whitted/labs.hpp"
 
 #include <algorithm>
@@ -128,6 +129,10 @@ void find_blockers(Tracer::Engine& e, std::size_t light_count) {
 
 void Tracer::trace_pixels(std::span<const Vec2> positions, std::span<Color> colors) const {
     Engine& e = *engine_;
+    if (const RemoteSceneQueries* remote = remote_scene_queries(); remote && remote->trace_pixels && !e.tree) [[unlikely]] {
+        remote->trace_pixels(*this, positions, colors);
+        return;
+    }
     const Camera& camera = e.scene.camera();
     const bool lens = camera.aperture > 0.0 && e.settings.stage >= stage_number(Stage::depth_of_field);
     if (e.tree || lens || !e.scene.queries_packets()) {

@@ -91,11 +91,13 @@ function(whitted_split_programs)
   endforeach()
 
   # A worker that asks the checker for a shortcut only the checker asks (a pixel's lens rays, in lab 10's checker,
-  # where lab 9 is an earlier lab): the link breaks and says why.
-  add_test(NAME split.hostile.wrong_way COMMAND check_10_bvh --worker=$<TARGET_FILE:raw_hostile_worker> --gtest_filter=BvhClosestHit.*)
-  set_tests_properties(split.hostile.wrong_way PROPERTIES LABELS "split;hostile" TIMEOUT 600 RUN_SERIAL TRUE
-    ENVIRONMENT WHITTED_HOSTILE=wrong_way
-    PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 0 tests\\.[^\n]*\n(.|\n)*that only the other side makes")
+  # where lab 9 is an earlier lab; a block of pixels): the link breaks and says why.
+  foreach(mode wrong_way wrong_way_pixels)
+    add_test(NAME split.hostile.${mode} COMMAND check_10_bvh --worker=$<TARGET_FILE:raw_hostile_worker> --gtest_filter=BvhClosestHit.*)
+    set_tests_properties(split.hostile.${mode} PROPERTIES LABELS "split;hostile" TIMEOUT 600 RUN_SERIAL TRUE
+      ENVIRONMENT WHITTED_HOSTILE=${mode}
+      PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 0 tests\\.[^\n]*\n(.|\n)*that only the other side makes")
+  endforeach()
 
   # A lab 10 whose walks ask the checker for their answer (lab 1's closest_hit(), the scene's queries):
   # the checker refuses inside a walk, so every walk test fails and the checker names the call.

@@ -30,7 +30,8 @@ enum class ExceptionKind : std::uint8_t { not_implemented = 1, std_exception = 2
 bool takes_tracer(Op op) {
     switch (op) {
     case Op::is_lit: case Op::lambert: case Op::blinn_phong: case Op::reflection: case Op::refraction:
-    case Op::fresnel_blend: case Op::light_samples: case Op::tracer_trace: case Op::tracer_trace_sample: return true;
+    case Op::fresnel_blend: case Op::light_samples: case Op::tracer_trace: case Op::tracer_trace_sample:
+    case Op::tracer_trace_pixels: return true;
     default: return false;
     }
 }
@@ -70,7 +71,8 @@ constexpr std::array<std::string_view, kLastOp + 1> kFunctionNames{
     "concentric_disk", "thin_lens_ray", "box_entry", "build_bvh", "bvh_closest_hit", "bvh_occluded",
     "Scene::lab_bvh", "intersect", "Tracer::trace", "Tracer::trace_sample",
     "stratified_sample", // stratified_cell: the student's code called stratified_sample()
-    "thin_lens_ray"};     // thin_lens_rays: the checker's render called it
+    "thin_lens_ray",      // thin_lens_rays: the checker's render called it
+    "Tracer::trace_pixels"};
 constexpr bool every_op_named() {
     for (std::string_view name : kFunctionNames)
         if (name.empty()) return false;
@@ -384,8 +386,10 @@ void Link::serve(const Frame& frame) {
     ++depth_;
     try {
         if (lab_of(op) == 0 && !is_recursion(op)) fail("a call of unknown function " + std::to_string(static_cast<int>(op)));
-        // The shortcuts go one way each: cells from the checker's lab 7, a pixel's lens rays from the worker's lab 9.
-        if ((op == Op::stratified_cell && role_ == Role::worker) || (op == Op::thin_lens_rays && role_ == Role::checker))
+        // The shortcuts go one way each: cells from the checker's lab 7, a pixel's lens rays from the worker's lab 9,
+        // blocks of pixels from a worker that holds every lab.
+        if ((op == Op::stratified_cell && role_ == Role::worker) ||
+            ((op == Op::thin_lens_rays || op == Op::tracer_trace_pixels) && role_ == Role::checker))
             fail("a call of " + name_of(op) + " that only the other side makes");
         if (depth_ > kMaxNesting) fail("calls nested more than " + std::to_string(kMaxNesting) + " deep");
         if (role_ == Role::checker && op != Op::scene_lab_bvh && !takes_tracer(op) && !allowed(op, nullptr))

@@ -60,11 +60,16 @@ enum class Op : std::uint16_t {
     stratified_cell,
     // Lab 9's thin_lens_ray() for the samples of a pixel at once (LensRaysAhead).
     thin_lens_rays,
+    // The framework's Tracer::trace_pixels() for a block of pixels, asked of a worker that holds every lab (the
+    // integration tests): one crossing a block instead of an eye ray's, a hit's and a shading call's a pixel.
+    tracer_trace_pixels,
 };
-constexpr int kLastOp = static_cast<int>(Op::thin_lens_rays);
+constexpr int kLastOp = static_cast<int>(Op::tracer_trace_pixels);
 
-/// Whether `op` is the framework's recursion (Tracer::trace, trace_sample), which belongs to no lab.
-constexpr bool is_recursion(Op op) { return op == Op::tracer_trace || op == Op::tracer_trace_sample; }
+/// Whether `op` is the framework's recursion (Tracer::trace, trace_sample, trace_pixels), which belongs to no lab.
+constexpr bool is_recursion(Op op) {
+    return op == Op::tracer_trace || op == Op::tracer_trace_sample || op == Op::tracer_trace_pixels;
+}
 
 /// The lab (1..kLabCount, from the lab table) whose code answers `op`; 0 for none.
 int lab_of(Op op);
@@ -91,6 +96,8 @@ enum class Role {
 using LabSet = std::uint32_t;
 static_assert(kLabCount < 32, "LabSet holds the labs as bits of 32");
 constexpr LabSet lab_bit(int lab) { return LabSet{1} << lab; }
+/// Labs 1..kLabCount, all of them.
+constexpr LabSet every_lab() { return ((LabSet{1} << (kLabCount + 1)) - 1) & ~LabSet{1}; }
 
 /// Where stratified_sample(index, count, u) puts every u: (cell + u) / grid, axis by axis, with cell and grid
 /// whole numbers (the column and row of the sample's cell, and the grid's columns and rows).
@@ -182,6 +189,8 @@ class Link {
     static void set_current(Link* link);
 
     Role role() const { return role_; }
+    /// The labs whose code is on the other side.
+    LabSet remote_labs() const { return remote_labs_; }
     /// Why the link broke, or empty while it works.
     const std::string& broken() const { return broken_; }
     /// The innermost call to the other side that was in progress when the link broke, as

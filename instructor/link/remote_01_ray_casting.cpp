@@ -9,6 +9,8 @@ namespace whitted {
 
 using link::Link;
 using link::Op;
+using link::Reader;
+using link::every_lab;
 
 Ray primary_ray(const Camera& camera, double x, double y) {
     Link::Call call(Link::current(), Op::primary_ray);
@@ -71,13 +73,30 @@ std::optional<Hit> remote_intersect_shape(const Ray& ray, const Shape& shape, In
     return call.result<std::optional<Hit>>();
 }
 
+/// A block of pixels traced by a worker that holds every lab (the integration tests).
+void remote_trace_pixels(const Tracer& tracer, std::span<const Vec2> positions, std::span<Color> colors) {
+    Link::Call call(Link::current(), Op::tracer_trace_pixels);
+    call.tracer(tracer);
+    call.args().put(static_cast<std::uint64_t>(positions.size()));
+    for (const Vec2& position : positions) call.args().put(position);
+    Reader& in = call.send();
+    for (Color& color : colors) color = in.get<Vec3>();
+    call.done();
+}
+
 } // namespace
 
 const RemoteSceneQueries* remote_scene_queries() {
-    // A checker whose lab 1 the worker answers asks the worker only for the scene's queries.
-    static constexpr RemoteSceneQueries checker{remote_closest_hit, remote_occluded, nullptr, nullptr};
-    static constexpr RemoteSceneQueries worker{remote_closest_hit, remote_occluded, remote_lab_bvh, remote_intersect_shape};
-    return Link::current().role() == link::Role::worker ? &worker : &checker;
+    // A checker whose lab 1 the worker answers asks the worker only for the scene's queries; one whose worker
+    // holds every lab asks it for whole blocks of pixels too.
+    static constexpr RemoteSceneQueries checker{remote_closest_hit, remote_occluded, nullptr, nullptr, nullptr};
+    static constexpr RemoteSceneQueries every_lab_over_there{remote_closest_hit, remote_occluded, nullptr, nullptr,
+                                                             remote_trace_pixels};
+    static constexpr RemoteSceneQueries worker{remote_closest_hit, remote_occluded, remote_lab_bvh,
+                                               remote_intersect_shape, nullptr};
+    const Link& link = Link::current();
+    if (link.role() == link::Role::worker) return &worker;
+    return link.remote_labs() == every_lab() ? &every_lab_over_there : &checker;
 }
 
 } // namespace whitted

@@ -207,6 +207,17 @@ void serve_op(Link& link, Op op, Reader& in, Writer& out) {
         out.put(tracer.state());
         return out.put(color);
     }
+    case Op::tracer_trace_pixels: {
+        const Tracer& tracer = link.incoming_tracer(in, op);
+        std::vector<Vec2> positions(in.count(16));
+        for (Vec2& position : positions) position = in.get<Vec2>();
+        end_of(in);
+        std::vector<Color> colors(positions.size());
+        tracer.trace_pixels(positions, colors);
+        out.put(tracer.state());
+        for (const Color& color : colors) out.put(color);
+        return;
+    }
     case Op::light_samples: {
         const Tracer& tracer = link.incoming_tracer(in, op);
         const AreaLight light = in.get<AreaLight>();

@@ -42,6 +42,11 @@ int main() {
             Writer call;
             call.raw(static_cast<std::uint16_t>(Op::thin_lens_rays));
             write_frame(channel, FrameType::call, call.bytes());
+        } else if (mode == "wrong_way_pixels") {
+            // Asks the checker to trace a block of pixels, which only a checker asks of a worker that holds every lab.
+            Writer call;
+            call.raw(static_cast<std::uint16_t>(Op::tracer_trace_pixels));
+            write_frame(channel, FrameType::call, call.bytes());
         } else if (mode == "exit0") {
             _exit(0);
         } else if (mode == "abort") {

@@ -13,10 +13,12 @@
 #include "whitted/interval.hpp"
 
 #include <optional>
+#include <span>
 
 namespace whitted {
 
 class Scene;
+class Tracer;
 
 struct RemoteSceneQueries {
     std::optional<Hit> (*closest_hit)(const Scene& scene, const Ray& ray, Interval t_range);
@@ -26,6 +28,9 @@ struct RemoteSceneQueries {
     /// The framework's own shapes (boxes, cones) tested by the other process, so that
     /// their slab test is never in the graded lab's hands (null: they are tested here).
     std::optional<Hit> (*intersect_shape)(const Ray& ray, const Shape& shape, Interval t_range);
+    /// Tracer::trace_pixels() whole, run by the other process where it holds every lab (a grading's
+    /// integration tests): one crossing for a block of pixels instead of several a pixel (null: traced here).
+    void (*trace_pixels)(const Tracer& tracer, std::span<const Vec2> positions, std::span<Color> colors);
 };
 
 /// The queries of the other process, or nullptr in every program but a grading checker or worker.
