@@ -215,14 +215,22 @@ void classify_pair(TestOutcome& outcome, const ProcessRun& checker, const Proces
         if (!worker.output.empty() || worker.output_truncated) outcome.output += what_the_code_printed(worker, limits);
         return;
     }
-    std::string details = link_problem.empty() ? "" : "grading link: " + link_problem + "\n";
+    // A worker that died closed the link: the checker's words for that ("the other side of the link closed it",
+    // the exception it made in the test) would only repeat the message above.
+    const auto says_link_closed = [](const std::string& text) {
+        return text.find("link closed it") != std::string::npos || text.find("other side of the link is gone") != std::string::npos;
+    };
+    const bool died = worker.end == ProcessRun::End::signalled;
+    std::string details = link_problem.empty() || (died && says_link_closed(link_problem)) ? "" : "grading link: " + link_problem + "\n";
     const std::optional<std::vector<std::string>> failures = recorded_failures(report_file, outcome.name);
     if (failures) {
         std::string reported;
-        for (const std::string& failure : *failures) reported += failure + "\n";
+        for (const std::string& failure : *failures)
+            if (!(died && says_link_closed(failure))) reported += failure + "\n";
         details += first_lines(reported, kReportLines);
     }
-    outcome.output = details + what_the_code_printed(worker, limits);
+    outcome.output = details;
+    if (!worker.output.empty() || worker.output_truncated) outcome.output += what_the_code_printed(worker, limits);
 }
 
 std::optional<std::map<std::string, bool>> read_test_results(const std::filesystem::path& report_file) {
