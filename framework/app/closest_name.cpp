@@ -35,6 +35,15 @@ std::optional<std::string> closest_name(std::string_view given, const std::vecto
             best_distance = distance;
         }
     }
+    if (best) return best;
+    // A name cut short ("--out" for "--output"): the one name it begins, when it is one and three letters or more.
+    const std::size_t letters = given.size() - std::min(given.find_first_not_of('-'), given.size());
+    if (letters < 3) return std::nullopt;
+    for (const std::string& name : names) {
+        if (!name.starts_with(given)) continue;
+        if (best) return std::nullopt; // the beginning of two names
+        best = name;
+    }
     return best;
 }
 

@@ -46,6 +46,14 @@ TEST(ClosestName, SuggestsNothingForAFarName) {
     EXPECT_EQ(closest_name("x", {}), std::nullopt);
 }
 
+TEST(ClosestName, SuggestsTheOneNameAShortenedNameBegins) {
+    const std::vector<std::string> options = {"--output", "--overwrite", "--threads", "--stage", "--stats"};
+    EXPECT_EQ(closest_name("--out", options), "--output"); // three edits from --output: no slip, but its beginning
+    EXPECT_EQ(closest_name("--thr", options), "--threads");
+    EXPECT_EQ(closest_name("--st", options), std::nullopt);  // two letters
+    EXPECT_EQ(closest_name("--sta", options), std::nullopt); // the beginning of --stage and --stats
+}
+
 TEST(ClosestName, PrefersTheNearestName) {
     EXPECT_EQ(closest_name("heigth", {"width", "height"}), "height");
     EXPECT_EQ(closest_name("spp", {"stats", "spp"}), "spp");
