@@ -29,14 +29,16 @@ std::vector<AnswerAhead> Link::fresnel_blend_answers(const Tracer& tracer, const
         answers.push_back(std::move(ahead));
         return true;
     };
-    // The calls of the reference's fresnel_blend() (solution/06_fresnel.cpp), at most four: answers.size() <= 8.
-    answers.reserve(4);
-    const Material& material = tracer.scene().material(hit);
-    const double eta_i = hit.front_face ? 1.0 : material.ior;
-    const double eta_t = hit.front_face ? material.ior : 1.0;
+    // The calls of the reference's fresnel_blend() (solution/06_fresnel.cpp): the mirror ray, and the refracted ray
+    // for both orders of the indices, in the same order whichever side the hit is on, so that the answers tell
+    // nothing of which order the reference picks there (lab 6's own work). At most six: answers.size() <= 8.
+    if (hit.material >= tracer.scene().material_count()) return answers;
+    answers.reserve(6);
+    const double ior = tracer.scene().material(hit).ior;
     if (answer(Op::mirror_direction, wo, hit.normal)) answer(Op::spawn_ray, hit, mirror_direction(wo, hit.normal));
-    if (answer(Op::refracted_direction, wo, hit.normal, eta_i, eta_t))
-        if (const std::optional<Vec3> wt = refracted_direction(wo, hit.normal, eta_i, eta_t)) answer(Op::spawn_ray, hit, *wt);
+    for (const auto& [eta_i, eta_t] : {std::pair{1.0, ior}, std::pair{ior, 1.0}})
+        if (answer(Op::refracted_direction, wo, hit.normal, eta_i, eta_t))
+            if (const std::optional<Vec3> wt = refracted_direction(wo, hit.normal, eta_i, eta_t)) answer(Op::spawn_ray, hit, *wt);
     return answers;
 }
 

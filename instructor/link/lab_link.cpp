@@ -258,8 +258,9 @@ Reader& Link::Call::send() {
         }
     } catch (const LinkError& e) {
         if (link_.role_ == Role::checker) {
-            // The innermost call catches the break first: the call the worker was running when it died.
-            if (link_.broken_.empty()) link_.broken_during_ = lab_call_name(op_);
+            // The innermost call catches the break first: the call the worker was running when it died (none to
+            // name for a block of pixels, which runs every lab's code).
+            if (link_.broken_.empty() && !is_recursion(op_)) link_.broken_during_ = lab_call_name(op_);
             link_.fail(e.what());
         }
         throw;

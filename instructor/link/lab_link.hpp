@@ -157,7 +157,8 @@ std::vector<LensRaysAhead::Query> pixel_samples_from(double x, double y, Vec2 le
 /// own labs, through the very code that answers a real call (serve_op()), and the worker answers a call with
 /// exactly these bytes from them, during that served call only; any other call crosses as before. Nothing is
 /// handed over that the call would not give: only functions of labs before the graded one, where the graded
-/// lab may call them, on numbers the worker was sent.
+/// lab may call them, on numbers the worker was sent, the same calls whatever the hit (both orders of the
+/// indices of refraction: which one applies is lab 6's to decide).
 struct AnswerAhead {
     std::vector<std::byte> call;  // [op][arguments], as Link::Call encodes them in the worker
     std::vector<std::byte> reply; // the reply's payload

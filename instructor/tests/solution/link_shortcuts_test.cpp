@@ -156,12 +156,21 @@ TEST(LinkShortcuts, FresnelBlendsCallsAreAnsweredAheadWithTheReferencesAnswers) 
         Tracer tracer(glass.scene, settings, stats);
         const OpenChannel channel;
         link::Link checker(link::Role::checker, channel.pair.checker, link::lab_bit(6));
-        // From outside, the mirror and refracted directions and their rays; from inside at 60 degrees, past the
-        // critical angle of 1.5 (41.8 degrees): total internal reflection, no refracted ray.
-        const Vec3 wo = front_face ? glm::normalize(Vec3(0.3, 0.2, 4.0)) : Vec3(std::sqrt(0.75), 0.0, -0.5);
+        // The mirror direction and its ray, then the refracted direction for both orders of the indices (air to
+        // glass, glass to air) and each one's ray. At 60 degrees from the normal, past the critical angle of glass
+        // to air (41.8 degrees): no refracted ray that way, from either side.
+        const Vec3 wo = Vec3(std::sqrt(0.75), 0.0, 0.5) * (front_face ? 1.0 : -1.0);
         const std::vector<link::AnswerAhead> answers = checker.fresnel_blend_answers(tracer, glass.hit, wo);
-        EXPECT_EQ(answers.size(), front_face ? 4u : 3u);
+        EXPECT_EQ(answers.size(), 5u);
         expect_reference_answers(answers);
+        // The same calls, in the same order, whichever side the hit is on: nothing tells which order applies.
+        std::vector<std::uint16_t> ops;
+        for (const link::AnswerAhead& answer : answers) ops.push_back(static_cast<std::uint16_t>(answer.call[0]) | static_cast<std::uint16_t>(answer.call[1]) << 8);
+        const std::vector<std::uint16_t> expected_ops = {
+            static_cast<std::uint16_t>(link::Op::mirror_direction), static_cast<std::uint16_t>(link::Op::spawn_ray),
+            static_cast<std::uint16_t>(link::Op::refracted_direction), static_cast<std::uint16_t>(link::Op::spawn_ray),
+            static_cast<std::uint16_t>(link::Op::refracted_direction)};
+        EXPECT_EQ(ops, expected_ops);
     }
 }
 
