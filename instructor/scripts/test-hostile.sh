@@ -54,6 +54,9 @@ protected_hash() {
         ! -path "$build/instructor/tests/test-output/*" -print0 2> /dev/null |
         sort -z | xargs -0 sha256sum | sha256sum | cut -d' ' -f1
 }
+# Brought up to date first, as the first grading would (make rewrites its dependency files after a new configure,
+# such as test-bench's in CI): what changes after this is the submissions' doing.
+cmake --build "$build" -j"$jobs" --target grading_parts > /dev/null
 before=$(protected_hash)
 
 # checked NAME WHAT ARGS... < PYTHON: runs the Python (its ok(condition, text) collects problems; ARGS are its
