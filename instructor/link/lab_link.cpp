@@ -43,10 +43,12 @@ std::vector<std::byte> exception_payload(ExceptionKind kind, const std::string& 
     return std::move(out.bytes());
 }
 
+// Byte blobs cross as the wire's strings.
 std::vector<std::byte> bytes_of(const std::string& text) {
     const auto* first = reinterpret_cast<const std::byte*>(text.data());
     return {first, first + text.size()};
 }
+std::string text_of(const std::vector<std::byte>& bytes) { return {reinterpret_cast<const char*>(bytes.data()), bytes.size()}; }
 
 // The answers ahead of a call from the checker (Call::answers_ahead()).
 std::vector<AnswerAhead> read_answers_ahead(Reader& in) {
@@ -197,8 +199,8 @@ void Link::Call::answers_ahead(const std::vector<AnswerAhead>& answers) {
                                std::to_string(kMostAnswersAhead));
     args_.bytes()[2] = static_cast<std::byte>(answers.size());
     for (const AnswerAhead& answer : answers) {
-        args_.put(std::string(reinterpret_cast<const char*>(answer.call.data()), answer.call.size()));
-        args_.put(std::string(reinterpret_cast<const char*>(answer.reply.data()), answer.reply.size()));
+        args_.put(text_of(answer.call));
+        args_.put(text_of(answer.reply));
     }
 }
 

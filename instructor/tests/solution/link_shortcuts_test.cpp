@@ -114,21 +114,27 @@ struct GlassHit {
         return data;
     }
     explicit GlassHit(bool front_face) : scene(glass()) {
-        // The unit sphere at the origin, hit from outside at (0, 0, 1) by a ray from (0.3, 0.2, 5), or from the
-        // inside there by a ray from the centre: the normal faces the ray either way.
+        // The unit sphere at the origin, hit at (0, 0, 1) from outside or from inside: the normal faces the ray
+        // either way.
         hit.front_face = front_face;
         hit.point = Point3(0.0, 0.0, 1.0);
         hit.normal = hit.geometric_normal = Vec3(0.0, 0.0, front_face ? 1.0 : -1.0);
     }
 };
 
+// The function an answer ahead answers: its call's first two bytes.
+std::uint16_t op_of(const link::AnswerAhead& answer) {
+    std::uint16_t op;
+    std::memcpy(&op, answer.call.data(), sizeof op);
+    return op;
+}
+
 // What each answer ahead says: the reference's result for its call, decoded as the worker decodes a reply.
 void expect_reference_answers(const std::vector<link::AnswerAhead>& answers) {
     for (const link::AnswerAhead& answer : answers) {
         std::vector<std::byte> call(answer.call.begin() + 2, answer.call.end());
         link::Reader in(call), reply(answer.reply);
-        std::uint16_t op;
-        std::memcpy(&op, answer.call.data(), sizeof op);
+        const std::uint16_t op = op_of(answer);
         if (op == static_cast<std::uint16_t>(link::Op::mirror_direction)) {
             const Vec3 wo = in.get<Vec3>(), n = in.get<Vec3>();
             EXPECT_EQ(reply.get<Vec3>(), mirror_direction(wo, n));
@@ -165,7 +171,7 @@ TEST(LinkShortcuts, FresnelBlendsCallsAreAnsweredAheadWithTheReferencesAnswers) 
         expect_reference_answers(answers);
         // The same calls, in the same order, whichever side the hit is on: nothing tells which order applies.
         std::vector<std::uint16_t> ops;
-        for (const link::AnswerAhead& answer : answers) ops.push_back(static_cast<std::uint16_t>(answer.call[0]) | static_cast<std::uint16_t>(answer.call[1]) << 8);
+        for (const link::AnswerAhead& answer : answers) ops.push_back(op_of(answer));
         const std::vector<std::uint16_t> expected_ops = {
             static_cast<std::uint16_t>(link::Op::mirror_direction), static_cast<std::uint16_t>(link::Op::spawn_ray),
             static_cast<std::uint16_t>(link::Op::refracted_direction), static_cast<std::uint16_t>(link::Op::spawn_ray),
