@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fcntl.h>
 #include <sched.h>
@@ -16,14 +17,16 @@ namespace whitted::link {
 namespace {
 constexpr std::size_t kRingBytes = std::size_t{1} << 20;
 // Spinning pays while the other side runs on another core; when it does not
-// (more processes than cores), it only delays it. So the spin budget adapts:
-// it doubles after a wait that spinning ended, halves after one that had to
-// sleep, and stays short: a spin's CPU time counts against the test, and on a
-// busy machine a long one burned more of it (lab 8's image test: 3 s of CPU
-// idle, over 20 s beside 8 busy loops with 4096 spins and a yield every 64;
-// 10 s with 1024 and no yield).
-constexpr int kMaxSpins = 1024;
-constexpr int kMinSpins = 16;
+// (more processes than cores: a busy machine), a spin is lost CPU time, and
+// that time counts against the test. So a wait spins for about what sleeping
+// and waking costs (a pipe round trip, ~10 µs), then sleeps: most calls are
+// answered within that, and on a busy machine a wait loses at most that much.
+// Timed with the clock, not counted in pauses: a pause takes from 10 to 140
+// cycles on x86, and ARM has none. Lab 6's image test, the worker's CPU time
+// idle and beside 4 busy loops on 2 cores: 0.8 s and 2.4 s; with the earlier
+// budget of up to 1024 pauses (31 µs on this machine), 0.8 s and 5.4 s.
+constexpr std::chrono::nanoseconds kSpinTime{10'000};
+constexpr int kPausesBetweenClockReads = 8;
 // Where this process may run on one CPU alone (taskset, a one-CPU container), both sides share it: a
 // wait yields it to the other side at once, up to this many times before it sleeps (a wake-up through
 // the pipe costs a system call on each side).
@@ -119,14 +122,15 @@ void Channel::wait_until(std::atomic<std::uint32_t>& sleeping, bool (Channel::*r
             sched_yield();
         }
     } else {
-        for (int i = 0; i < spins_; ++i) {
-            if ((this->*ready)()) {
-                spins_ = std::min(spins_ * 2, kMaxSpins);
-                return;
+        // No yield: on a busy machine a yield hands the core to another program for a whole slice.
+        const auto start = std::chrono::steady_clock::now();
+        for (;;) {
+            for (int i = 0; i < kPausesBetweenClockReads; ++i) {
+                if ((this->*ready)()) return;
+                cpu_relax();
             }
-            cpu_relax(); // no yield: on a busy machine a yield hands the core to another program for a whole slice
+            if (std::chrono::steady_clock::now() - start > kSpinTime) break;
         }
-        spins_ = std::max(spins_ / 2, kMinSpins);
     }
     for (;;) {
         sleeping.store(1, std::memory_order_seq_cst);

@@ -68,8 +68,7 @@ class Channel {
     int wake_in_ = -1, wake_out_ = -1;
     std::uint64_t written_ = 0; // our position in out_, kept here: the shared copy may be forged
     std::uint64_t read_ = 0;    // our position in in_
-    int spins_ = 256;           // how long to spin before sleeping (adapts, channel.cpp)
-    bool one_cpu_ = false;      // this process may run on one CPU only: yield instead of spinning
+    bool one_cpu_ = false; // this process may run on one CPU only: yield instead of spinning
 };
 
 } // namespace whitted::link

@@ -111,6 +111,13 @@ def ok(condition, text):
     if not condition: problems.append(text)
 exec(conditions)
 for problem in problems: print("  " + problem)
+# What CI shows of a failure is all there is to go on: each named lab's tests that did not pass, with how they ended.
+for lab, tests in by_lab.items():
+    if not any(lab in problem for problem in problems): continue
+    for t in tests:
+        if t["extra_data"]["status"] == "passed": continue
+        lines = [line for line in t["output"].splitlines() if line.strip()][:3]
+        print(f"    {t['name']} ({t['visibility']}): {t['extra_data']['status']}" + "".join("\n      " + line[:200] for line in lines))
 sys.exit(1 if problems else 0)
 EOF
         echo "FAIL $name: see above"
