@@ -2,10 +2,11 @@
 # The same grade whatever the machine's load (CI, after `make test`). Grades the
 # reference and the reference with one catalogued lab 8 mistake
 # (one_point_too_few: a light sample short) under the Gradescope set-up's
-# default limits (--timeout 20 --budget 600), three ways:
+# default limits (--timeout 20 --budget 600), two ways:
 #   one-cpu  on one CPU (taskset -c 0): the checker and the worker share it;
-#   busy-4   on every CPU, with 4 busy loops beside the grading;
-#   busy-8   with 8 busy loops.
+#   busy-8   on every CPU, with 8 busy loops beside the grading (4 loops, the
+#            step between, was dropped to keep CI inside its time: it never
+#            failed where these two passed).
 # The reference must get 100/100 each time, and the mistake the same points and
 # statuses, test by test, each time. Then the grader is killed (SIGTERM, SIGKILL)
 # in the middle of a lab: no checker or worker may be left 2 s later. Prints how
@@ -35,11 +36,10 @@ cp solution/*.cpp "$work/reference/labs/"
 cp -r solution "$work/mistake/solution"
 patch -s -d "$work/mistake" -p1 < instructor/tests/mistakes/08_soft_shadows/one_point_too_few.patch
 
-for condition in one-cpu busy-4 busy-8; do
+for condition in one-cpu busy-8; do
     prefix=()
     case $condition in
     one-cpu) prefix=(taskset -c 0) ;;
-    busy-4) busy 4 ;;
     busy-8) busy 8 ;;
     esac
     timed "reference-$condition" 0 "$work/reference-$condition.log" "$work/reference-$condition.log" \
@@ -65,13 +65,13 @@ def grade(condition):
     results = json.load(open(f"{sys.argv[1]}/mistake-{condition}/results.json"))
     return [(t["name"], t["extra_data"]["status"], t["score"]) for t in results["tests"]], results["score"]
 one, score = grade("one-cpu")
-problems = [f"{condition}: {a} instead of {b}" for condition in ("busy-4", "busy-8")
+problems = [f"{condition}: {a} instead of {b}" for condition in ("busy-8",)
             for a, b in zip(grade(condition)[0], one) if a != b]
 for problem in problems[:20]: print("  " + problem)
 print(f"  the mistake scored {score} each time" if not problems else f"  {len(problems)} tests differ")
 sys.exit(1 if problems else 0)
 PY
-    echo "ok   the mistake's grade is the same on one CPU, with 4 and with 8 busy loops"
+    echo "ok   the mistake's grade is the same on one CPU and with 8 busy loops"
 else
     echo "FAIL the mistake's grade depends on the load"
     failures=$((failures + 1))
