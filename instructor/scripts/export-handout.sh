@@ -26,13 +26,13 @@ printf '%s\n' "$files" | grep -vE "$private" | while IFS= read -r file; do
     cp -p "$file" "$out/$file"
 done
 cp instructor/docs/handout/README.md "$out/README.md"
-# Its presets: the student's builds only (the others need instructor/): release, asan and each lab's.
+# Its presets: the student's builds only (the others need instructor/): release, asan and each lab's (and their base).
 python3 - "$out/CMakePresets.json" <<'PRESETS'
 import json, re, sys
 path = sys.argv[1]
 presets = json.load(open(path))
 for kind in ("configurePresets", "buildPresets", "testPresets"):
-    presets[kind] = [p for p in presets.get(kind, []) if p["name"] in ("release", "asan") or re.fullmatch(r"lab[0-9]+", p["name"])]
+    presets[kind] = [p for p in presets.get(kind, []) if p["name"] in ("release", "asan") or re.fullmatch(r"lab([0-9]+|-base)", p["name"])]
 json.dump(presets, open(path, "w"), indent=2)
 open(path, "a").write("\n")
 PRESETS
