@@ -123,18 +123,13 @@ struct GlassHit {
 };
 
 // The function an answer ahead answers: its call's first two bytes.
-std::uint16_t op_of(const link::AnswerAhead& answer) {
-    std::uint16_t op;
-    std::memcpy(&op, answer.call.data(), sizeof op);
-    return op;
-}
+std::uint16_t op_of(const link::AnswerAhead& answer) { return link::Reader(answer.call).raw<std::uint16_t>(); }
 
 // What each answer ahead says: the reference's result for its call, decoded as the worker decodes a reply.
 void expect_reference_answers(const std::vector<link::AnswerAhead>& answers) {
     for (const link::AnswerAhead& answer : answers) {
-        std::vector<std::byte> call(answer.call.begin() + 2, answer.call.end());
-        link::Reader in(call), reply(answer.reply);
-        const std::uint16_t op = op_of(answer);
+        link::Reader in(answer.call), reply(answer.reply);
+        const auto op = in.raw<std::uint16_t>();
         if (op == static_cast<std::uint16_t>(link::Op::mirror_direction)) {
             const Vec3 wo = in.get<Vec3>(), n = in.get<Vec3>();
             EXPECT_EQ(reply.get<Vec3>(), mirror_direction(wo, n));
