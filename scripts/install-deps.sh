@@ -12,7 +12,8 @@
 # of the reference); --ci, python3 (the grader checks read results.json with
 # it; python3-yaml reads the handout's GitHub Classroom workflow), patch,
 # qemu-user (to run the renderer on an emulated CPU without AVX2), bubblewrap,
-# chromium and clang (the sanitizer build: faster than g++'s), for CI on a bare machine.
+# chromium, clang (the sanitizer build: faster than g++'s) and libc++ (the handout
+# built as on macOS: instructor/scripts/test-platforms.sh), for CI on a bare machine.
 set -euo pipefail
 
 packages=(g++ make cmake pkg-config libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev libseccomp-dev)
@@ -24,7 +25,7 @@ case "${1:-}" in
     --fuzz) optional=(clang libclang-rt-14-dev) ;;
     --browser) optional=(chromium) ;;
     --proofs) packages+=(patch) ;;
-    --ci) packages+=(python3 python3-yaml patch qemu-user) optional=(bubblewrap chromium clang libclang-rt-14-dev) ;;
+    --ci) packages+=(python3 python3-yaml patch qemu-user) optional=(bubblewrap chromium clang libclang-rt-14-dev libc++-14-dev libc++abi-14-dev) ;;
     *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz|--browser|--proofs|--ci]" >&2; exit 2 ;;
 esac
 # The instructor tree's `make test` also builds a catalogued mistake (a patch of the reference: GNU patch)

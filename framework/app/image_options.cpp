@@ -1,4 +1,5 @@
 #include "image_options.hpp"
+#include "platform.hpp"
 
 #include "whitted/scene_loader.hpp"
 
@@ -6,7 +7,6 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <unistd.h>
 
 namespace whitted {
 
@@ -41,7 +41,7 @@ std::string check_output_path(const std::string& path) {
     const bool exists = std::filesystem::exists(path, error);
     if (exists && !std::filesystem::is_regular_file(path, error))
         return "not a regular file (a device or pipe cannot hold the image): " + path;
-    if (access(exists ? path.c_str() : (folder.empty() ? "." : folder.c_str()), W_OK) != 0)
+    if (!may_write(exists ? std::filesystem::path(path) : (folder.empty() ? "." : folder)))
         return "cannot write the image (no permission): " + path;
     return {};
 }
@@ -70,7 +70,7 @@ CLI::Validator writable_file_validator() {
             const std::filesystem::path folder = std::filesystem::path(path).parent_path();
             if (!folder.empty() && !std::filesystem::is_directory(folder, error)) return "no such folder: " + folder.string();
             const bool exists = std::filesystem::exists(path, error);
-            if (access(exists ? path.c_str() : (folder.empty() ? "." : folder.c_str()), W_OK) != 0)
+            if (!may_write(exists ? std::filesystem::path(path) : (folder.empty() ? "." : folder)))
                 return "cannot write (no permission): " + path;
             return {};
         },

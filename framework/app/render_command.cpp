@@ -3,6 +3,7 @@
 #include "exit_codes.hpp"
 #include "progress.hpp"
 #include "image_options.hpp"
+#include "platform.hpp"
 #include "stage_choice.hpp"
 #include "whitted/image_pictures.hpp"
 #include "whitted/lab_status.hpp"
@@ -21,7 +22,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unistd.h>
 
 namespace whitted {
 namespace {
@@ -129,7 +129,7 @@ int run_render(const RenderOptions& options) {
     const double build_seconds = seconds_since(build_start);
     const double load_seconds = seconds_since(load_start);
 
-    ProgressBar bar(stderr, !options.quiet && isatty(fileno(stderr)));
+    ProgressBar bar(stderr, !options.quiet && is_terminal(stderr));
     const auto show_progress = [&](double done) { bar.update(done); };
     std::string pass_summary;
     RenderResult result;

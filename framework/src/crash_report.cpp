@@ -105,7 +105,7 @@ void write_error(const CrashLine& line) {
 }
 
 // Set by the first thread to crash: another thread that crashes meanwhile waits for it to end the program.
-std::atomic_flag g_crashed = ATOMIC_FLAG_INIT;
+std::atomic_flag g_crashed; // clear: C++20 deprecates ATOMIC_FLAG_INIT, the default is clear
 
 extern "C" void report_crash(int signal) {
     if (g_crashed.test_and_set()) {

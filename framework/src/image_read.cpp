@@ -1,5 +1,6 @@
 // Reading PNG, JPEG, PPM (P6 and P3) and PFM (PF and Pf) files into linear images.
 // Every malformed file becomes an ImageError "path: what is wrong".
+#include "double_from_chars.hpp"
 #include "image_format.hpp"
 #include "printable.hpp"
 
@@ -83,7 +84,7 @@ class HeaderReader {
     double real(const char* what) {
         const std::string_view text = token(what);
         double value = 0.0;
-        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        const auto [end, error] = detail::double_from_chars(text.data(), text.data() + text.size(), value);
         if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) || value == 0.0) {
             throw image_error(path_, std::string("bad ") + what + " " + detail::quoted_printable(text));
         }

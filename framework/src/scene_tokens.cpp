@@ -1,4 +1,5 @@
 #include "scene_tokens.hpp"
+#include "double_from_chars.hpp"
 #include "printable.hpp"
 
 #include "whitted/scene_loader.hpp"
@@ -45,7 +46,7 @@ enum class Parsed { ok, malformed, not_finite };
 /// Parses the whole token as a double; values too small for a double become 0 (or a subnormal).
 Parsed parse_double(std::string_view text, double& value) {
     text = without_plus(text);
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    const auto [end, error] = double_from_chars(text.data(), text.data() + text.size(), value);
     if (end != text.data() + text.size()) return Parsed::malformed;
     if (error == std::errc::result_out_of_range) {
         // from_chars reports underflow and overflow alike; strtod tells them apart.

@@ -75,6 +75,30 @@ class ThreadPlacement {
     std::vector<int> cpus_;
 };
 
+// The threads of one for_each_tile call, each joined when the call's block ends,
+// whatever ends it: what std::jthread does, which libc++ 14 and the libc++ of the
+// Xcode versions students have lack.
+class JoiningThreads {
+  public:
+    JoiningThreads() = default;
+    JoiningThreads(const JoiningThreads&) = delete;
+    JoiningThreads& operator=(const JoiningThreads&) = delete;
+
+    /// Starts a thread that runs a copy of `function` with `thread_index`.
+    template <class Function>
+    void start(const Function& function, int thread_index) {
+        threads_.emplace_back(function, thread_index);
+    }
+
+    /// Waits for every thread started.
+    ~JoiningThreads() {
+        for (std::thread& thread : threads_) thread.join();
+    }
+
+  private:
+    std::vector<std::thread> threads_;
+};
+
 } // namespace
 
 int tile_count(int width, int height) {
@@ -114,10 +138,10 @@ int for_each_tile(int width, int height, int threads, const std::function<TileFu
         }
     };
     {
-        std::vector<std::jthread> pool;
+        JoiningThreads pool;
         for (int i = 1; i < threads; ++i) {
             placement.move_caller_to(i); // thread i inherits that processor
-            pool.emplace_back(worker, i);
+            pool.start(worker, i);
         }
         placement.move_caller_to(0);
         worker(0);

@@ -128,8 +128,10 @@ inline Interval feeler_range(double distance) { return Interval{0.0, distance * 
 inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 inline bool same_bits(const Ray& a, const Ray& b) {
     bool same = true;
-    for (int axis = 0; axis < 3; ++axis)
-        same &= same_bits(a.origin[axis], b.origin[axis]) & same_bits(a.direction[axis], b.direction[axis]);
+    for (int axis = 0; axis < 3; ++axis) { // no && : every comparison made, no branch between them
+        same &= same_bits(a.origin[axis], b.origin[axis]);
+        same &= same_bits(a.direction[axis], b.direction[axis]);
+    }
     return same;
 }
 

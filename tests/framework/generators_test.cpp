@@ -12,9 +12,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 #include <vector>
 
 using namespace whitted;
@@ -27,10 +27,11 @@ std::vector<FlakeSphere> flake(int level) {
     return spheres;
 }
 
-// Writes `text` to a fresh temporary file with the given extension and loads it.
+// Writes `text` to a fresh temporary file with the given extension and loads it
+// (a random number in its name: two test runs at once use different files).
 LoadedScene load_text(const std::string& text, const std::string& name) {
     const std::filesystem::path path =
-        std::filesystem::temp_directory_path() / ("whitted_gen_" + std::to_string(getpid()) + "_" + name);
+        std::filesystem::temp_directory_path() / ("whitted_gen_" + std::to_string(std::random_device{}()) + "_" + name);
     std::ofstream(path) << text;
     LoadedScene scene = load_scene(path);
     std::filesystem::remove(path);

@@ -1,0 +1,16 @@
+// The system calls of the `whitted` command that Windows and POSIX systems
+// (Linux, macOS) spell differently, each behind one portable function.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+
+namespace whitted {
+
+/// True when `stream` goes to a terminal (a console window), not to a file or a pipe.
+bool is_terminal(std::FILE* stream);
+
+/// True when this process may write to the file or folder at `path`.
+bool may_write(const std::filesystem::path& path);
+
+} // namespace whitted

@@ -1,0 +1,188 @@
+#!/usr/bin/env bash
+# CI: the student's side builds and passes its tests with the compilers and standard
+# libraries of the students' own machines, not only Debian's g++ (issue 39). For each
+# target the exported handout is built (Release) and
+#   a. with the untouched stubs, every lab's tests fail, each failure a stub's
+#      "not implemented yet" (the progress report of `make test` says which);
+#   b. with the reference labs copied in, every public test passes;
+#   c. the classic scene renders the very PNG (and PFM) that the Linux (g++) build in
+#      build/ renders, and so does the scene of the course's every feature (labs 7-10).
+# Usage: bash instructor/scripts/test-platforms.sh [TARGET ...]   (default: every target)
+# Targets:
+#   libcxx  Debian's clang 14 with libc++: the compiler and standard library of macOS
+# A target is a CMake toolchain file, instructor/scripts/platforms/TARGET.cmake (a cross
+# target's also sets CMAKE_CROSSCOMPILING_EMULATOR, through which CTest and this script
+# run its programs), and its lines in check_tools below. GoogleTest is built for each
+# target from Debian's sources (/usr/src/googletest), once: PLATFORMS_BUILD_DIR/TARGET
+# (build-platforms/ by default). JOBS compile jobs (2 by default).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+root=$(pwd)
+jobs=${JOBS:-2}
+cache=${PLATFORMS_BUILD_DIR:-$root/build-platforms}
+all_targets=(libcxx)
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
+fail() { echo "test-platforms: $*" >&2; exit 1; }
+for target in "${targets[@]}"; do
+    [ -f "instructor/scripts/platforms/$target.cmake" ] || fail "no target '$target' (the targets: ${all_targets[*]})"
+done
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+times=()
+# phase NAME COMMAND...: runs the command and records how long it took.
+phase() {
+    local name=$1 start=$SECONDS
+    shift
+    "$@"
+    times+=("$(printf '%5d s  %s' $((SECONDS - start)) "$name")")
+    echo "test-platforms: ${times[-1]}"
+}
+# quiet LOG COMMAND...: runs the command with its output in LOG, shown (its end) only if it fails.
+quiet() {
+    local log=$1
+    shift
+    "$@" > "$log" 2>&1 || { tail -40 "$log"; fail "failed: $*"; }
+}
+
+# What each target needs on this machine, with the command that installs it.
+check_tools() {
+    case $1 in
+    libcxx)
+        echo '#include <vector>' | clang++ -std=c++20 -stdlib=libc++ -x c++ -fsyntax-only - 2> /dev/null ||
+            fail "libcxx needs clang++ and libc++: apt-get install clang libc++-14-dev libc++abi-14-dev"
+        ;;
+    esac
+    [ -f /usr/src/googletest/CMakeLists.txt ] || fail "$1 needs GoogleTest's sources: apt-get install googletest"
+}
+
+# The renders compared: the classic scene as the README renders it, as a PNG and as a PFM (its float
+# pixels, before they are rounded to bytes), and the scene of the course's every feature (labs 7-10).
+# render_all FOLDER COMMAND...: those renders into FOLDER, by `COMMAND render` run where scenes/ is.
+renders=(whitted_1980.png whitted_1980.pfm course_features.pfm)
+render_all() {
+    local out=$1
+    shift
+    mkdir -p "$out"
+    "$@" render scenes/whitted_1980.p3f --width 512 --height 512 -q -o "$out/whitted_1980.png"
+    "$@" render scenes/whitted_1980.p3f --width 512 --height 512 -q -o "$out/whitted_1980.pfm"
+    "$@" render scenes/course_features.p3f -q -o "$out/course_features.pfm"
+}
+
+# The Linux renders to compare with: build/whitted (g++, the instructor's tree), built if missing.
+linux_renders() {
+    if [ ! -f build/CMakeCache.txt ]; then
+        quiet "$work/linux-configure.log" cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+    fi
+    quiet "$work/linux-build.log" cmake --build build -j"$jobs" --target whitted
+    render_all "$work/linux" build/whitted
+}
+
+# GoogleTest built with the target's toolchain into PREFIX, unless the one there was built with this toolchain file.
+googletest() {
+    local target=$1 prefix=$2 toolchain=$root/instructor/scripts/platforms/$1.cmake stamp
+    stamp=$(cat "$toolchain" /usr/src/googletest/CMakeLists.txt | sha256sum)
+    [ "$(cat "$prefix/toolchain.sha256" 2> /dev/null)" != "$stamp" ] || return 0
+    rm -rf "$prefix" "$prefix-build"
+    quiet "$work/$target-googletest-configure.log" cmake -S /usr/src/googletest -B "$prefix-build" \
+        --toolchain "$toolchain" -DCMAKE_BUILD_TYPE=Release -DBUILD_GMOCK=OFF -DCMAKE_INSTALL_PREFIX="$prefix"
+    quiet "$work/$target-googletest-build.log" cmake --build "$prefix-build" -j"$jobs"
+    quiet "$work/$target-googletest-install.log" cmake --install "$prefix-build"
+    rm -rf "$prefix-build"
+    echo "$stamp" > "$prefix/toolchain.sha256"
+}
+
+# The handout built for the target; a warning counts as a failure (each is a portability problem).
+build_handout() {
+    local target=$1 build=$2 log=$3
+    quiet "$log" cmake --build "$build" -j"$jobs"
+    if grep -q "warning:" "$log"; then
+        grep -A3 "warning:" "$log" | head -40
+        fail "$target: the build printed $(grep -c "warning:" "$log") warnings"
+    fi
+}
+
+# The progress report of `make test` (scripts/lab-progress.sh) on the target's build, in LOG; its exit status in LOG.status.
+progress() {
+    local handout=$1 build=$2 log=$3 status=0
+    (cd "$handout" && JOBS=$jobs bash scripts/lab-progress.sh "$build") > "$log" 2>&1 || status=$?
+    echo "$status" > "$log.status"
+}
+
+# With the stubs: every lab's tests fail, and every failing test failed on a stub's "not implemented yet".
+check_stubs() {
+    local target=$1 handout=$2 build=$3 log=$work/$1-stubs.log labs failed waiting others
+    progress "$handout" "$build" "$log"
+    [ "$(cat "$log.status")" -ne 0 ] || fail "$target: make test's report passed with the stubs"
+    grep -E "tests pass" "$log"
+    labs=$(grep -c . "$work/$target-labs.tsv")
+    [ "$(grep -cE "^   lab [0-9]+ \(.*\): 0/[0-9]+ tests pass" "$log")" -eq "$labs" ] ||
+        fail "$target: not every one of the $labs labs has a progress line with 0 tests passed"
+    # Every failed test's output names a stub (read from the CTest log as the progress report reads it).
+    failed=$(grep -E "\*\*\*(Failed|Exception|Timeout)|Not Run" "$build/Testing/progress.log" |
+        sed -E 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/' | sort)
+    waiting=$(awk '/^[0-9]+\/[0-9]+ Test: / { name = $3 } /is not implemented yet/ && name != "" { print name; name = "" }' \
+        "$build/Testing/Temporary/LastTest.log" | sort -u)
+    others=$(comm -23 <(printf '%s\n' "$failed") <(printf '%s\n' "$waiting"))
+    [ -z "$others" ] || fail "$target: with the stubs, these tests failed without a stub's message: $others"
+    echo "$target stubs: $(grep -c . <<< "$failed") tests fail, each on a stub;" \
+        "$(grep -c ' Passed ' "$build/Testing/progress.log") pass (they need no lab)"
+}
+
+# With the reference labs: every public test passes.
+check_reference() {
+    local target=$1 handout=$2 build=$3 log=$work/$1-reference.log not_ok
+    cp "$root"/solution/[0-9][0-9]_*.cpp "$handout/labs/"
+    build_handout "$target" "$build" "$work/$target-build-reference.log"
+    progress "$handout" "$build" "$log"
+    grep -E "tests pass" "$log"
+    [ "$(cat "$log.status")" -eq 0 ] || fail "$target: make test's report failed with the reference labs"
+    not_ok=$(grep -E "tests pass" "$log" | grep -v "^ok " || true)
+    [ -z "$not_ok" ] || fail "$target: progress lines without ok with the reference labs: $not_ok"
+    echo "$target reference labs: $(grep -E "tests passed, [0-9]+ tests failed out of" "$build/Testing/progress.log")," \
+        "$(grep -c '\*\*\*Skipped' "$build/Testing/progress.log") skipped"
+}
+
+# The target's renders, compared byte for byte with the Linux renders.
+check_renders() {
+    local target=$1 handout=$2 file
+    (cd "$handout" && render_all "$work/$target" "${run[@]}" "$bin") || fail "$target: whitted render failed"
+    for file in "${renders[@]}"; do
+        if cmp -s "$work/linux/$file" "$work/$target/$file"; then
+            echo "$target render: $file identical to the Linux render"
+        else
+            echo "$target render: $file differs from the Linux render:"
+            build/whitted diff "$work/linux/$file" "$work/$target/$file" || true
+            fail "$target: $file differs from the Linux render"
+        fi
+    done
+}
+
+phase "Linux renders (build/whitted)" linux_renders
+for target in "${targets[@]}"; do
+    echo "test-platforms: $target"
+    check_tools "$target"
+    prefix=$cache/$target/googletest
+    phase "$target: GoogleTest (built once into $prefix)" googletest "$target" "$prefix"
+    handout=$work/$target/handout
+    build=$work/$target/build
+    quiet "$work/$target-export.log" bash instructor/scripts/export-handout.sh "$handout"
+    # The SPD scenes, beside the handout as beside this tree (their tests skip without them).
+    [ ! -d "$root/../shared" ] || ln -s "$root/../shared" "$work/$target/shared"
+    quiet "$work/$target-configure.log" cmake -S "$handout" -B "$build" \
+        --toolchain "$root/instructor/scripts/platforms/$target.cmake" \
+        -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix"
+    # How to run the target's programs: directly, or through its emulator (qemu-user, wine).
+    emulator=$(sed -n 's/^CMAKE_CROSSCOMPILING_EMULATOR:[A-Z]*=//p' "$build/CMakeCache.txt")
+    read -r -a run <<< "$emulator"
+    phase "$target: build the handout with the stubs" build_handout "$target" "$build" "$work/$target-build.log"
+    bin=$build/whitted
+    [ -f "$bin" ] || bin=$bin.exe # Windows
+    "${run[@]}" "$bin" labs --tsv > "$work/$target-labs.tsv"
+    phase "$target: a. the stubs' tests" check_stubs "$target" "$handout" "$build"
+    phase "$target: b. the reference labs: build and tests" check_reference "$target" "$handout" "$build"
+    phase "$target: c. renders" check_renders "$target" "$handout"
+done
+printf '%s\n' "test-platforms: phase times" "${times[@]}"
+echo "test-platforms: passed (${targets[*]})"
