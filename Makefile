@@ -72,7 +72,7 @@ test: build
 ifneq ($(INSTRUCTOR),)
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
 else
-	@bash scripts/lab-progress.sh $(BUILD_DIR)
+	@cmake -DBUILD_DIR=$(BUILD_DIR) -DJOBS=$(JOBS) -P scripts/lab.cmake
 endif
 endif
 

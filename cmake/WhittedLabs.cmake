@@ -66,7 +66,7 @@ function(whitted_lab_object target file)
   add_library(${target} OBJECT ${file})
   target_link_libraries(${target} PUBLIC whitted_framework)
   # Stubs name their parameters for the student but do not use them yet.
-  target_compile_options(${target} PRIVATE -Wno-unused-parameter)
+  target_compile_options(${target} PRIVATE $<IF:$<CXX_COMPILER_ID:MSVC>,/wd4100,-Wno-unused-parameter>)
 endfunction()
 
 # whitted_lab_mix(OUT BASE [LAB SET]): the object libraries of every lab from
@@ -112,4 +112,14 @@ function(whitted_renderer target)
   add_executable(${target} $<TARGET_OBJECTS:whitted_app>)
   target_link_libraries(${target} PRIVATE ${A_LABS} ${A_KERNELS} ${A_COMMANDS} whitted_trace whitted_closest_name whitted_framework
                                           whitted_generators CLI11::CLI11)
+  # Windows: text and file names in UTF-8, as elsewhere (framework/app/windows/utf8.manifest).
+  if(WIN32)
+    set(WHITTED_UTF8_MANIFEST ${PROJECT_SOURCE_DIR}/framework/app/windows/utf8.manifest)
+    if(MSVC)
+      target_sources(${target} PRIVATE ${WHITTED_UTF8_MANIFEST})
+    else()
+      configure_file(${PROJECT_SOURCE_DIR}/framework/app/windows/utf8.rc.in ${PROJECT_BINARY_DIR}/utf8.rc @ONLY)
+      target_sources(${target} PRIVATE ${PROJECT_BINARY_DIR}/utf8.rc)
+    endif()
+  endif()
 endfunction()

@@ -12,11 +12,13 @@
 # of the reference); --ci, python3 (the grader checks read results.json with
 # it; python3-yaml reads the handout's GitHub Classroom workflow), patch,
 # qemu-user (to run the renderer on an emulated CPU without AVX2), bubblewrap,
-# chromium, clang (the sanitizer build: faster than g++'s) and libc++ (the handout
-# built as on macOS: instructor/scripts/test-platforms.sh), for CI on a bare machine.
+# chromium, clang (the sanitizer build: faster than g++'s), and what
+# instructor/scripts/test-platforms.sh builds the handout with: clang with libc++ (as on
+# macOS), GCC for 64-bit ARM with qemu-user (Apple silicon's instruction set), MinGW-w64
+# with Wine (Windows), and GoogleTest's sources; for CI on a bare machine.
 set -euo pipefail
 
-packages=(g++ make cmake pkg-config libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev libseccomp-dev)
+packages=(g++ make cmake libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev)
 optional=()
 case "${1:-}" in
     "") ;;
@@ -25,19 +27,21 @@ case "${1:-}" in
     --fuzz) optional=(clang libclang-rt-14-dev) ;;
     --browser) optional=(chromium) ;;
     --proofs) packages+=(patch) ;;
-    --ci) packages+=(python3 python3-yaml patch qemu-user) optional=(bubblewrap chromium clang libclang-rt-14-dev libc++-14-dev libc++abi-14-dev) ;;
+    --ci) packages+=(python3 python3-yaml patch qemu-user clang libc++-14-dev libc++abi-14-dev googletest g++-aarch64-linux-gnu g++-mingw-w64-x86-64 wine64)
+          optional=(bubblewrap chromium libclang-rt-14-dev) ;;
     *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz|--browser|--proofs|--ci]" >&2; exit 2 ;;
 esac
 # The instructor tree's `make test` also builds a catalogued mistake (a patch of the reference: GNU patch)
-# and the constant-answers proof (its lab files are written by a python3 script).
+# and the constant-answers proof (its lab files are written by a python3 script); its grader filters
+# the student code's system calls with libseccomp, found by pkg-config.
 if [ -d "$(dirname "$0")/../instructor" ]; then
-    for package in patch python3; do
+    for package in patch python3 pkg-config libseccomp-dev; do
         [[ " ${packages[*]} " == *" $package "* ]] || packages+=("$package")
     done
 fi
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
-    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json, libseccomp)${optional[*]:+; optional: ${optional[*]}}" >&2
+    echo "install-deps: this is not a Debian/Ubuntu system; install by hand: ${packages[*]} (C++20 compiler, CMake >= 3.22, GLM, GoogleTest, stb, CLI11, nlohmann-json; the instructor tree: libseccomp)${optional[*]:+; optional: ${optional[*]}}" >&2
     exit 0
 fi
 

@@ -1,6 +1,7 @@
 // The `whitted` command: render NFF and P3F scenes with the Whitted ray tracer.
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "platform.hpp"
 #include "usage_error.hpp"
 #include "version.hpp"
 #include "whitted/crash_report.hpp"
@@ -15,10 +16,14 @@
 #include <vector>
 
 int main(int argc, char** argv) {
+    whitted::use_utf8_console();
     CLI::App app{"whitted: a Whitted-style recursive ray tracer for NFF and P3F scenes."};
     app.footer("Example: whitted render scenes/whitted_1980.p3f -o whitted_1980.png --stats\n"
                "Exit code: 0 done, 1 the answer is no (diff: the images differ), 2 cannot do what was given "
                "(a bad option, a bad or missing file, labs not done), 3 whitted itself failed.");
+    // Options are --name on every system: CLI11 would also take /name on Windows, and then read a path
+    // such as /tmp/scene.nff as an option. Set before the subcommands, which copy it.
+    app.allow_windows_style_options(false);
     app.set_version_flag("-V,--version", whitted::version_line(), "Print the version and the build, then exit");
     app.require_subcommand(1);
     std::vector<whitted::Command> commands = {whitted::add_render_command(app), whitted::add_trace_command(app),

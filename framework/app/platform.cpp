@@ -2,11 +2,18 @@
 
 #ifdef _WIN32
 #include <io.h> // _isatty, _waccess (MSVC and MinGW)
+#include <windows.h> // SetConsoleOutputCP
 #else
 #include <unistd.h> // isatty, access
 #endif
 
 namespace whitted {
+
+void use_utf8_console() {
+#ifdef _WIN32
+    SetConsoleOutputCP(CP_UTF8);
+#endif
+}
 
 bool is_terminal(std::FILE* stream) {
 #ifdef _WIN32

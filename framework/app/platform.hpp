@@ -7,6 +7,9 @@
 
 namespace whitted {
 
+/// Makes the console show this program's UTF-8 text as letters (Windows); nothing elsewhere, where it already does.
+void use_utf8_console();
+
 /// True when `stream` goes to a terminal (a console window), not to a file or a pipe.
 bool is_terminal(std::FILE* stream);
 

@@ -154,7 +154,7 @@ int run_render(const RenderOptions& options) {
     else write_image(with_broken_pixels_marked(result.image), output, encoding);
     if (!options.quiet) {
         std::printf("wrote %s (%dx%d, stage %d%s%s): rendered in %.3f s, scene loaded and built in %.3f s\n",
-                    std::filesystem::absolute(output).lexically_normal().c_str(), width, height, *stage,
+                    std::filesystem::absolute(output).lexically_normal().string().c_str(), width, height, *stage,
                     options.pass ? ", pass " : "", options.pass ? std::string(pass_info(*options.pass).name).c_str() : "",
                     result.seconds, load_seconds);
         if (options.pass) {

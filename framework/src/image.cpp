@@ -96,12 +96,21 @@ void write_pfm(const Image& image, const std::filesystem::path& path) {
     finish_writing(out, path);
 }
 
-/// Writes an 8-bit RGB PNG through stb_image_write.
+/// Appends what stb_image_write hands over to the std::ofstream it was given as `context`.
+void append_to_stream(void* context, void* data, int size) {
+    static_cast<std::ofstream*>(context)->write(static_cast<const char*>(data), size);
+}
+
+/// Writes an 8-bit RGB PNG, encoded by stb_image_write into a file opened here by its
+/// std::filesystem::path, so that any path the platform can name works (non-ASCII on Windows).
 void write_png(const Image& image, const std::filesystem::path& path, Encoding encoding) {
     const std::vector<unsigned char> bytes = to_bytes(image, encoding);
-    if (stbi_write_png(path.string().c_str(), image.width, image.height, 3, bytes.data(), image.width * 3) == 0) {
+    std::ofstream out = open_for_writing(path);
+    if (stbi_write_png_to_func(append_to_stream, &out, image.width, image.height, 3, bytes.data(), image.width * 3) ==
+        0) {
         throw image_error(path, "cannot write PNG file");
     }
+    finish_writing(out, path);
 }
 
 } // namespace

@@ -20,7 +20,11 @@ std::string escaped_bytes(std::string_view text, bool keep_line_breaks) {
 
 std::string quoted_printable(std::string_view word) {
     constexpr std::size_t kMostShown = 60;
-    return "'" + escaped_bytes(word.substr(0, kMostShown)) + (word.size() > kMostShown ? "...'" : "'");
+    // Appended, not "'" + a string: GCC 12 warns, wrongly, that the latter may overlap (-Wrestrict).
+    std::string quoted = "'";
+    quoted += escaped_bytes(word.substr(0, kMostShown));
+    quoted += word.size() > kMostShown ? "...'" : "'";
+    return quoted;
 }
 
 } // namespace whitted::detail

@@ -265,7 +265,7 @@ WideRay::Numbers RayPacket::lane(int i) const {
 
 void RayPacket::refresh_t_max() {
     float t_max = -std::numeric_limits<float>::infinity();
-    for (unsigned rays = active_; rays != 0; rays &= rays - 1) t_max = std::max(t_max, t_max_[__builtin_ctz(rays)]);
+    for (unsigned rays = active_; rays != 0; rays &= rays - 1) t_max = std::max(t_max, t_max_[std::countr_zero(rays)]);
     t_max_hi_ = t_max;
 }
 

@@ -160,10 +160,6 @@ function(whitted_grading_kit)
   if(WHITTED_HAS_GOLD)
     string(APPEND text "link -fuse-ld=gold\n")
   endif()
-  # The framework reads images (skybox faces) with the system's stb_image.
-  foreach(flag IN LISTS STB_LDFLAGS)
-    string(APPEND text "link ${flag}\n")
-  endforeach()
   string(APPEND text "headers ${PROJECT_SOURCE_DIR}/framework/include/whitted\n")
   # whitted/labs.hpp precompiled with the same compiler and arguments: a lab
   # file that includes it first compiles in a quarter of the time.

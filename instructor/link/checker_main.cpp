@@ -10,6 +10,7 @@
 // line "during box_entry() (labs/10_bvh.cpp)" when a call to the worker was in progress. Exit
 // code: GoogleTest's (0 all passed, 1 a failure), or 3 when the link broke (the worker died, stalled, or broke the protocol) or
 // the worker ended badly: then no test of this run may count as passed.
+#include "printers.hpp" // the tests' printers, as every test file sees them (tests/CMakeLists.txt)
 #include "lab_link.hpp"
 
 #include <gtest/gtest.h>

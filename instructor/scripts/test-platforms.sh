@@ -9,18 +9,22 @@
 #      build/ renders, and so does the scene of the course's every feature (labs 7-10).
 # Usage: bash instructor/scripts/test-platforms.sh [TARGET ...]   (default: every target)
 # Targets:
-#   libcxx  Debian's clang 14 with libc++: the compiler and standard library of macOS
+#   libcxx   Debian's clang 14 with libc++: the compiler and standard library of macOS
+#   aarch64  GCC for 64-bit ARM (Apple silicon's instruction set, no SSE), run under qemu-user
+#   mingw    MinGW-w64's GCC for 64-bit Windows, run under Wine
 # A target is a CMake toolchain file, instructor/scripts/platforms/TARGET.cmake (a cross
 # target's also sets CMAKE_CROSSCOMPILING_EMULATOR, through which CTest and this script
 # run its programs), and its lines in check_tools below. GoogleTest is built for each
 # target from Debian's sources (/usr/src/googletest), once: PLATFORMS_BUILD_DIR/TARGET
-# (build-platforms/ by default). JOBS compile jobs (2 by default).
+# (build-platforms/ by default). The header-only libraries (GLM, CLI11, nlohmann-json,
+# stb) are Debian's, seen by a cross target through a folder of their own (headers_prefix).
+# JOBS compile jobs (2 by default).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 root=$(pwd)
 jobs=${JOBS:-2}
 cache=${PLATFORMS_BUILD_DIR:-$root/build-platforms}
-all_targets=(libcxx)
+all_targets=(libcxx aarch64 mingw)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 fail() { echo "test-platforms: $*" >&2; exit 1; }
@@ -29,7 +33,9 @@ for target in "${targets[@]}"; do
 done
 
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+# KEEP=1 keeps the builds and logs (their folder is printed) to look into a failure.
+cleanup() { if [ -n "${KEEP:-}" ]; then echo "test-platforms: kept $work"; else rm -rf "$work"; fi; }
+trap cleanup EXIT
 times=()
 # phase NAME COMMAND...: runs the command and records how long it took.
 phase() {
@@ -53,8 +59,37 @@ check_tools() {
         echo '#include <vector>' | clang++ -std=c++20 -stdlib=libc++ -x c++ -fsyntax-only - 2> /dev/null ||
             fail "libcxx needs clang++ and libc++: apt-get install clang libc++-14-dev libc++abi-14-dev"
         ;;
+    aarch64)
+        command -v aarch64-linux-gnu-g++ > /dev/null && command -v qemu-aarch64 > /dev/null ||
+            fail "aarch64 needs the cross compiler and qemu-user: apt-get install g++-aarch64-linux-gnu qemu-user"
+        ;;
+    mingw)
+        command -v x86_64-w64-mingw32-g++-posix > /dev/null && [ -x /usr/lib/wine/wine64 ] ||
+            fail "mingw needs MinGW-w64 and Wine: apt-get install g++-mingw-w64-x86-64 wine64"
+        ;;
     esac
     [ -f /usr/src/googletest/CMakeLists.txt ] || fail "$1 needs GoogleTest's sources: apt-get install googletest"
+}
+
+# The header-only libraries, as a prefix of their own: a cross compiler must not see this machine's
+# /usr/include (its C library's headers are x86-64 Linux's), only these folders and their CMake files.
+headers_prefix() {
+    local prefix=$cache/headers package
+    rm -rf "$prefix"
+    mkdir -p "$prefix/include" "$prefix/share/cmake"
+    for package in glm CLI nlohmann stb; do ln -s "/usr/include/$package" "$prefix/include/$package"; done
+    # The packages' CMake files find their headers relative to themselves: copies, not links.
+    for package in glm CLI11 nlohmann_json; do cp -r "/usr/share/cmake/$package" "$prefix/share/cmake/"; done
+}
+
+# Wine's own Windows folder, made once (its first start takes seconds), and a Wine server kept
+# running for the whole run (each of the hundreds of test programs would otherwise start one).
+start_wine() {
+    export WINEPREFIX=$cache/wine WINEDEBUG=-all
+    /usr/lib/wine/wineserver -k 2> /dev/null || true # a server left by an earlier run
+    /usr/lib/wine/wineserver -p
+    /usr/lib/wine/wine64 cmd /c exit > /dev/null 2>&1 || true
+    trap 'cleanup; /usr/lib/wine/wineserver -k 2> /dev/null || true' EXIT
 }
 
 # The renders compared: the classic scene as the README renders it, as a PNG and as a PFM (its float
@@ -98,15 +133,15 @@ build_handout() {
     local target=$1 build=$2 log=$3
     quiet "$log" cmake --build "$build" -j"$jobs"
     if grep -q "warning:" "$log"; then
-        grep -A3 "warning:" "$log" | head -40
+        grep -B12 -A3 "warning:" "$log" | head -60
         fail "$target: the build printed $(grep -c "warning:" "$log") warnings"
     fi
 }
 
-# The progress report of `make test` (scripts/lab-progress.sh) on the target's build, in LOG; its exit status in LOG.status.
+# The progress report of `make test` (cmake -P scripts/lab.cmake: every test, then each lab's progress) on the target's build, in LOG; its exit status in LOG.status.
 progress() {
     local handout=$1 build=$2 log=$3 status=0
-    (cd "$handout" && JOBS=$jobs bash scripts/lab-progress.sh "$build") > "$log" 2>&1 || status=$?
+    (cd "$handout" && cmake -DBUILD_DIR="$build" -DJOBS="$jobs" -P scripts/lab.cmake) > "$log" 2>&1 || status=$?
     echo "$status" > "$log.status"
 }
 
@@ -147,22 +182,26 @@ check_reference() {
 # The target's renders, compared byte for byte with the Linux renders.
 check_renders() {
     local target=$1 handout=$2 file
-    (cd "$handout" && render_all "$work/$target" "${run[@]}" "$bin") || fail "$target: whitted render failed"
+    # Into a folder whose name has a space, as a student's folders often do.
+    local out="$work/$target/renders of $target"
+    (cd "$handout" && render_all "$out" "${run[@]}" "$bin") || fail "$target: whitted render failed"
     for file in "${renders[@]}"; do
-        if cmp -s "$work/linux/$file" "$work/$target/$file"; then
+        if cmp -s "$work/linux/$file" "$out/$file"; then
             echo "$target render: $file identical to the Linux render"
         else
             echo "$target render: $file differs from the Linux render:"
-            build/whitted diff "$work/linux/$file" "$work/$target/$file" || true
+            build/whitted diff "$work/linux/$file" "$out/$file" || true
             fail "$target: $file differs from the Linux render"
         fi
     done
 }
 
 phase "Linux renders (build/whitted)" linux_renders
+headers_prefix
 for target in "${targets[@]}"; do
     echo "test-platforms: $target"
     check_tools "$target"
+    [ "$target" != mingw ] || start_wine
     prefix=$cache/$target/googletest
     phase "$target: GoogleTest (built once into $prefix)" googletest "$target" "$prefix"
     handout=$work/$target/handout
@@ -172,9 +211,9 @@ for target in "${targets[@]}"; do
     [ ! -d "$root/../shared" ] || ln -s "$root/../shared" "$work/$target/shared"
     quiet "$work/$target-configure.log" cmake -S "$handout" -B "$build" \
         --toolchain "$root/instructor/scripts/platforms/$target.cmake" \
-        -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix"
+        -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix;$cache/headers" -DCMAKE_FIND_ROOT_PATH="$prefix;$cache/headers"
     # How to run the target's programs: directly, or through its emulator (qemu-user, wine).
-    emulator=$(sed -n 's/^CMAKE_CROSSCOMPILING_EMULATOR:[A-Z]*=//p' "$build/CMakeCache.txt")
+    emulator=$(sed -n 's/^CMAKE_CROSSCOMPILING_EMULATOR:[A-Z]*=//p' "$build/CMakeCache.txt" | tr ';' ' ')
     read -r -a run <<< "$emulator"
     phase "$target: build the handout with the stubs" build_handout "$target" "$build" "$work/$target-build.log"
     bin=$build/whitted

@@ -13,6 +13,8 @@ endif()
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE exit_code OUTPUT_VARIABLE out ERROR_VARIABLE err
                 TIMEOUT 60)
 set(all "${out}${err}")
+# Windows writes text with CRLF line ends; the patterns are written with LF.
+string(REPLACE "\r\n" "\n" all "${all}")
 if(NOT exit_code STREQUAL EXPECT_EXIT)
   message(FATAL_ERROR "exit code ${exit_code}, expected ${EXPECT_EXIT}\noutput:\n${all}")
 endif()

@@ -2,18 +2,29 @@
 
 #include "scene_tokens.hpp"
 
+#include <initializer_list>
 #include <ostream>
+#include <string>
 #include <variant>
 
 namespace {
 
 using whitted::detail::format_number; // the shortest text that reads back as the same double
 
-std::string coordinates(const glm::dvec2& v) { return "(" + format_number(v.x) + ", " + format_number(v.y) + ")"; }
-
-std::string coordinates(const glm::dvec3& v) {
-    return "(" + format_number(v.x) + ", " + format_number(v.y) + ", " + format_number(v.z) + ")";
+/// "(x, y, ...)", built by appending (GCC 12 warns, wrongly, of an overlap in "(" + a string).
+std::string coordinates(std::initializer_list<double> values) {
+    std::string text = "(";
+    for (const double value : values) {
+        if (text.size() > 1) text += ", ";
+        text += format_number(value);
+    }
+    text += ')';
+    return text;
 }
+
+std::string coordinates(const glm::dvec2& v) { return coordinates({v.x, v.y}); }
+
+std::string coordinates(const glm::dvec3& v) { return coordinates({v.x, v.y, v.z}); }
 
 } // namespace
 

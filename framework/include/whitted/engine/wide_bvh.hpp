@@ -27,6 +27,7 @@
 #include "whitted/engine/ray_packet.hpp"
 #include "whitted/engine/wide_ray.hpp"
 
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -158,7 +159,7 @@ void WideBvh::traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& 
             float t_entry[kWidth];
             unsigned mask = test_node<kAvx2>(wide, node, t_entry);
             if (mask == 0) goto pop;
-            int first = __builtin_ctz(mask);
+            int first = std::countr_zero(mask);
             mask &= mask - 1;
             if (mask == 0) {
                 current = node.child[first];
@@ -168,7 +169,7 @@ void WideBvh::traverse_impl(const Ray& ray, double t_min, double t_max, LeafFn& 
             const int base = top;
             stack[top++] = {node.child[first], t_entry[first]};
             for (; mask != 0; mask &= mask - 1) {
-                const int i = __builtin_ctz(mask);
+                const int i = std::countr_zero(mask);
                 stack[top] = {node.child[i], t_entry[i]};
                 if constexpr (kNearestFirst)
                     for (int k = top; k > base && stack[k].t_entry > stack[k - 1].t_entry; --k) std::swap(stack[k], stack[k - 1]);
@@ -221,7 +222,7 @@ void WideBvh::traverse_packet_impl(RayPacket& packet, LeafFn& leaf) const {
         unsigned mask = test_node<kAvx2>(packet, node, t_entry);
         const int base = top;
         for (; mask != 0; mask &= mask - 1) {
-            const int i = __builtin_ctz(mask);
+            const int i = std::countr_zero(mask);
             unsigned rays;
 #if WHITTED_AVX2_WALK
             if constexpr (kAvx2) rays = packet.rays_meeting_avx2(node.bounds, i, current_rays);
