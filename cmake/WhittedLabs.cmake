@@ -112,14 +112,21 @@ function(whitted_renderer target)
   add_executable(${target} $<TARGET_OBJECTS:whitted_app>)
   target_link_libraries(${target} PRIVATE ${A_LABS} ${A_KERNELS} ${A_COMMANDS} whitted_trace whitted_closest_name whitted_framework
                                           whitted_generators CLI11::CLI11)
-  # Windows: text and file names in UTF-8, as elsewhere (framework/app/windows/utf8.manifest).
-  if(WIN32)
-    set(WHITTED_UTF8_MANIFEST ${PROJECT_SOURCE_DIR}/framework/app/windows/utf8.manifest)
-    if(MSVC)
-      target_sources(${target} PRIVATE ${WHITTED_UTF8_MANIFEST})
-    else()
-      configure_file(${PROJECT_SOURCE_DIR}/framework/app/windows/utf8.rc.in ${PROJECT_BINARY_DIR}/utf8.rc @ONLY)
-      target_sources(${target} PRIVATE ${PROJECT_BINARY_DIR}/utf8.rc)
-    endif()
+  whitted_utf8(${target})
+endfunction()
+
+# whitted_utf8(TARGET): on Windows, the program's text and file names are UTF-8, as elsewhere: its
+# "ANSI" code page is UTF-8 (framework/app/windows/utf8.manifest), so a path with any letter (a
+# user name with accents) reaches it and the files it opens unchanged. Nothing on other systems.
+function(whitted_utf8 target)
+  if(NOT WIN32)
+    return()
+  endif()
+  set(WHITTED_UTF8_MANIFEST ${PROJECT_SOURCE_DIR}/framework/app/windows/utf8.manifest)
+  if(MSVC)
+    target_sources(${target} PRIVATE ${WHITTED_UTF8_MANIFEST})
+  else() # MinGW: as a resource
+    configure_file(${PROJECT_SOURCE_DIR}/framework/app/windows/utf8.rc.in ${PROJECT_BINARY_DIR}/utf8.rc @ONLY)
+    target_sources(${target} PRIVATE ${PROJECT_BINARY_DIR}/utf8.rc)
   endif()
 endfunction()

@@ -86,6 +86,7 @@ headers_prefix() {
 # running for the whole run (each of the hundreds of test programs would otherwise start one).
 start_wine() {
     export WINEPREFIX=$cache/wine WINEDEBUG=-all
+    mkdir -p "$WINEPREFIX" # the server needs the folder; the first program fills it
     /usr/lib/wine/wineserver -k 2> /dev/null || true # a server left by an earlier run
     /usr/lib/wine/wineserver -p
     /usr/lib/wine/wine64 cmd /c exit > /dev/null 2>&1 || true
@@ -204,11 +205,15 @@ for target in "${targets[@]}"; do
     [ "$target" != mingw ] || start_wine
     prefix=$cache/$target/googletest
     phase "$target: GoogleTest (built once into $prefix)" googletest "$target" "$prefix"
-    handout=$work/$target/handout
-    build=$work/$target/build
+    # The handout where a student keeps it: in a folder whose name has a space and, but under Wine, a letter
+    # beyond ASCII (Wine decodes a program's arguments in this machine's locale, C in CI, which has no such letter).
+    home="$work/$target/Zoë Student"
+    [ "$target" != mingw ] || home="$work/$target/Zoe Student"
+    handout=$home/labs
+    build=$handout/build
     quiet "$work/$target-export.log" bash instructor/scripts/export-handout.sh "$handout"
     # The SPD scenes, beside the handout as beside this tree (their tests skip without them).
-    [ ! -d "$root/../shared" ] || ln -s "$root/../shared" "$work/$target/shared"
+    [ ! -d "$root/../shared" ] || ln -s "$root/../shared" "$home/shared"
     quiet "$work/$target-configure.log" cmake -S "$handout" -B "$build" \
         --toolchain "$root/instructor/scripts/platforms/$target.cmake" \
         -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix;$cache/headers" -DCMAKE_FIND_ROOT_PATH="$prefix;$cache/headers"
