@@ -14,20 +14,19 @@
 
 cmake_minimum_required(VERSION 3.22) # the policies of the project's CMake (IN_LIST, ...)
 
-# The arguments after the script's name (cmake's own come first).
+# The arguments after the script's name (cmake's own, and -P with the script, come first).
 set(arguments)
-set(after_script FALSE)
 math(EXPR last "${CMAKE_ARGC} - 1")
 foreach(i RANGE ${last})
-  if(after_script)
-    list(APPEND arguments "${CMAKE_ARGV${i}}")
-  elseif(CMAKE_ARGV${i} STREQUAL "-P")
-    math(EXPR script_index "${i} + 1")
-    set(skip_to ${script_index})
-  elseif(DEFINED skip_to AND i EQUAL skip_to)
-    set(after_script TRUE)
+  if(CMAKE_ARGV${i} STREQUAL "-P")
+    math(EXPR first "${i} + 2")
   endif()
 endforeach()
+if(first LESS_EQUAL last)
+  foreach(i RANGE ${first} ${last})
+    list(APPEND arguments "${CMAKE_ARGV${i}}")
+  endforeach()
+endif()
 list(LENGTH arguments count)
 if(count GREATER 1 OR (count EQUAL 1 AND NOT arguments MATCHES "^0*([1-9]|10)$"))
   message(FATAL_ERROR "usage: cmake -P scripts/lab.cmake [N], where N is a lab number from 1 to 10 "
