@@ -16,11 +16,16 @@ function(whitted_lab_bits out)
   set(${out} ${bits} PARENT_SCOPE)
 endfunction()
 
+# The checkers' main, compiled once; each checker adds the one line that says which labs its worker answers.
+add_library(whitted_checker_main OBJECT ${PROJECT_SOURCE_DIR}/instructor/link/checker_main.cpp)
+target_link_libraries(whitted_checker_main PUBLIC whitted_link test_support)
+
 # whitted_checker(TARGET TESTS_OBJECTS LABS_ANSWERED_BY_THE_WORKER...)
 function(whitted_checker target tests)
   whitted_lab_bits(bits ${ARGN})
-  add_executable(${target} $<TARGET_OBJECTS:${tests}> ${PROJECT_SOURCE_DIR}/instructor/link/checker_main.cpp)
-  target_compile_definitions(${target} PRIVATE WHITTED_REMOTE_LABS=${bits})
+  set(remote_labs ${CMAKE_CURRENT_BINARY_DIR}/${target}_remote_labs.cpp)
+  file(CONFIGURE OUTPUT ${remote_labs} CONTENT "#include <cstdint>\n\nextern const std::uint32_t whitted_remote_labs = ${bits};\n")
+  add_executable(${target} $<TARGET_OBJECTS:${tests}> $<TARGET_OBJECTS:whitted_checker_main> ${remote_labs})
   set(labs)
   foreach(lab IN LISTS WHITTED_LABS)
     if(lab IN_LIST ARGN)

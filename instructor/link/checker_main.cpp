@@ -4,8 +4,8 @@
 //   check_<lab> --worker-fds=M,IN,OUT [gtest options]  the grader made the worker and the channel
 //   check_<lab> --worker=PROGRAM [gtest options]     start the worker here (CTest, by hand)
 //
-// WHITTED_REMOTE_LABS (a compile definition) is the set of labs the worker
-// answers, as bits 1..N (lab k is bit k). With WHITTED_LINK_REPORT=<file> in the environment, a
+// whitted_remote_labs is the set of labs the worker answers, as bits 1..N (lab k is bit k), defined by each
+// checker's own one-line file (instructor/cmake/WhittedSplit.cmake): this file compiles once for every checker. With WHITTED_LINK_REPORT=<file> in the environment, a
 // broken link's reason is also written to that file (for the grader), then the
 // line "during box_entry() (labs/10_bvh.cpp)" when a call to the worker was in progress. Exit
 // code: GoogleTest's (0 all passed, 1 a failure), or 3 when the link broke (the worker died, stalled, or broke the protocol) or
@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -23,8 +24,12 @@
 #include <optional>
 #include <string>
 #include <sys/wait.h>
+#include <type_traits>
 #include <unistd.h>
 #include <vector>
+
+extern const std::uint32_t whitted_remote_labs;
+static_assert(std::is_same_v<whitted::link::LabSet, std::uint32_t>, "whitted_remote_labs is a LabSet");
 
 namespace {
 
@@ -136,7 +141,7 @@ int main(int argc, char** argv) {
     }
     std::optional<Link> link;
     try {
-        link.emplace(whitted::link::Role::checker, worker.channel, WHITTED_REMOTE_LABS);
+        link.emplace(whitted::link::Role::checker, worker.channel, whitted_remote_labs);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "checker: %s\n", e.what());
         return 3;

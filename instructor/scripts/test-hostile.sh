@@ -17,13 +17,6 @@
 #                 earlier grading of the solution, overwriting the
 #                 reference images, the rubric, results.json and the checker's
 #                 report, an orphan left sleeping;
-#   hostile-c     vectors and colours right in x with NaN in y and z;
-#   lab 10 alone  answered through the framework's BVH builder and its box
-#                 primitive, a walk through lab 1's closest_hit() over every
-#                 primitive, a walk that never tests a box: 0 points each;
-#   constant-*    every lab function answering the same whatever it is asked
-#                 (instructor/scripts/lib/constant-labs.py: nothing, something,
-#                 passthrough): score 0, every lab 0;
 #   redteam       the untouched stubs with an attack per lab: including the
 #                 solution, forging the checker's report from its command
 #                 line, a main() of its own with fake tests, reading the
@@ -32,6 +25,14 @@
 #                 memory, an exception dressed as the checker's own words,
 #                 leaving files, queues and shared memory for a later run,
 #                 opening a socket, sharing the grader's session (terminal);
+# in the first of those modes only (nothing in them depends on the fence):
+#   hostile-c     vectors and colours right in x with NaN in y and z;
+#   lab 10 alone  answered through the framework's BVH builder and its box
+#                 primitive, a walk through lab 1's closest_hit() over every
+#                 primitive, a walk that never tests a box: 0 points each;
+#   constant-*    every lab function answering the same whatever it is asked
+#                 (instructor/scripts/lib/constant-labs.py: nothing, something,
+#                 passthrough): score 0, every lab 0;
 # and once: files (lab files that are links to the solution and to a secret, a
 # FIFO, a folder, an oversized file, #include "/dev/zero"), GoogleTest in the
 # lab files (its exceptions, tests of its own), a labs/ folder that is a link
@@ -232,6 +233,40 @@ ok(open(folder + "/results.json").read(1) == "{", "results.json was overwritten"
 
     # Something left for a later run or a later grading, a socket, and the grader's session (its terminal).
     leave='#include <cstdio> #include <cstring> #include <fcntl.h> #include <mqueue.h> #include <sys/shm.h> #include <sys/socket.h> #include <unistd.h> static const bool kept = [] { std::printf(getsid(0) == getpid() ? "a session of its own\n" : "SHARES a session\n"); const int made = open("/run/lock/hostile-lock", O_CREAT | O_WRONLY, 0666); mq_attr attr{}; attr.mq_maxmsg = 1; attr.mq_msgsize = 8; const mqd_t queue = mq_open("/hostile-queue", O_CREAT | O_RDWR, 0666, &attr); const int tcp = socket(AF_INET, SOCK_STREAM, 0); const int tmp = open("/tmp/hostile-kept", O_CREAT | O_WRONLY, 0666); std::printf("left: lock %d, queue %d, socket %d, tmp %d\n", made, (int)queue, tcp, tmp); const int id = shmget(0x686f7374, 4096, IPC_CREAT | 0600); char* text = id >= 0 ? static_cast<char*>(shmat(id, nullptr, 0)) : nullptr; if (text && text != reinterpret_cast<char*>(-1)) { if (*text) std::printf("LEAKED across runs: %s\n", text); else std::strcpy(text, "written by an earlier run"); } std::printf("shared memory %d\n", id); return true; }(); (void)kept;'
+    # The untouched stubs, each with an attack on the grader.
+    mkdir -p "$work/redteam-$mode-labs"
+    cp labs/*.cpp "$work/redteam-$mode-labs/"
+    forge='#include <cstdio> #include <dirent.h> #include <fstream> #include <string> static const bool forged = [] { DIR* proc = opendir("/proc"); int seen = 0; while (dirent* entry = proc ? readdir(proc) : nullptr) { std::ifstream file(std::string("/proc/") + entry->d_name + "/cmdline"); std::string text((std::istreambuf_iterator<char>(file)), {}); const std::size_t at = text.find("--gtest_output=json:"); if (at == std::string::npos) continue; ++seen; std::string path = text.substr(at + 20); path = path.substr(0, path.find(std::string(1, 0))); std::ofstream report(path); report << "{\"testsuites\": [{\"name\": \"ShadowFeelers\", \"testsuite\": [{\"name\": \"x\", \"failures\": []}]}]}"; std::printf(report ? "FORGED %s\n" : "could not forge %s\n", path.c_str()); } std::printf("checkers seen: %d\n", seen); return true; }(); (void)forged;'
+    python3 instructor/scripts/lib/inject.py "$work/redteam-$mode-labs" \
+        02_shadows spawn_ray "$forge" \
+        02_shadows is_lit "$overwrite" \
+        02_shadows lambert "$leave" \
+        04_reflection mirror_direction "$read_secrets" \
+        04_reflection reflection '#include <sys/mman.h> #include <cstring> static const bool corrupted = [] { void* ring = mmap(nullptr, 4096, PROT_READ | PROT_WRITE, MAP_SHARED, 3, 0); if (ring != MAP_FAILED) std::memset(ring, 0xff, 4096); return true; }(); (void)corrupted;' \
+        06_fresnel fresnel_blend '#include <stdexcept> throw std::runtime_error("fake\ngrading link broken: the worker said goodbye\n[       OK ] FresnelBlend.Fake (0 ms)");' \
+        06_fresnel fresnel_reflectance '#include <cstdio> #include <cstdlib> static const bool ran = [] { for (const char* command : {"'"$tree/$build"'/whitted render '"$tree"'/scenes/whitted_1980.p3f -o hostile-render.png", "'"$checker"' --gtest_list_tests"}) std::printf(std::system(command) == 0 ? "RAN the reference\n" : "could not run the reference\n"); return true; }(); (void)ran;'
+    printf '#include "../../solution/01_ray_casting.cpp"\n#include "%s/solution/01_ray_casting.cpp"\n' "$tree" | cat - labs/01_ray_casting.cpp > "$work/redteam-$mode-labs/01_ray_casting.cpp"
+    printf '#include <cstdio>\nint main() { std::puts("BlinnPhong.\\n  Fake"); return 0; }\n' >> "$work/redteam-$mode-labs/03_blinn_phong.cpp"
+    printf 'asm(".incbin \\"/etc/shadow\\"");\nasm(".incbin \\"%s/solution/05_refraction.cpp\\"");\n' "$tree" >> "$work/redteam-$mode-labs/05_refraction.cpp"
+    grade "redteam-$mode" "$work/redteam-$mode-labs" 1 "${options[@]}" --timeout 1
+    check "redteam-$mode" "$common$secrets
+$mode_line"'
+ok(results["score"] == 0, "points for stubs that attack: " + str(results["score"]))
+ok(statuses("01_ray_casting") == {"compile_error"}, "including the solution compiled: " + str(statuses("01_ray_casting")))
+ok(statuses("03_blinn_phong") == {"compile_error"}, "a main() of its own linked: " + str(statuses("03_blinn_phong")))
+ok(statuses("05_refraction") == {"compile_error"}, ".incbin of a secret compiled: " + str(statuses("05_refraction")))
+ok(shown("02_shadows", "checkers seen:"), "the forging attack did not run")
+ok(shown("02_shadows", "left: lock -1, queue -1, socket -1, tmp -1") and shown("02_shadows", "shared memory -1"), "a file, a queue, a socket or shared memory was made: " + str([t["output"][:300] for t in by_lab["02_shadows"] if "left:" in t["output"]][:1]))
+ok("'"$mode"'" != "users" or not shown("02_shadows", "SHARES a session"), "the worker shares the grader'"'"'s session (and its terminal)")
+ok(shown("02_shadows", "could not overwrite"), "the overwriting attack did not run")
+ok(shown("04_reflection", "could not read"), "the reading attack did not run")
+ok(shown("06_fresnel", "could not run"), "the running attack did not run")
+ok(shown("04_reflection", "the grading link broke: the other side broke the link"), "writing over the link: the broken link not named")
+ok("crash" not in statuses("06_fresnel"), "an exception dressed as checker output: " + str(statuses("06_fresnel")))'
+
+    # What follows does not depend on how the student's code is fenced (the checker's comparisons, the link's
+    # refusals, constant answers): graded once, in the first mode.
+    if [ "$mode" = "${modes[0]}" ]; then
     # Vectors and colours right in x and NaN in y and z: a comparison that drops NaN would pass them.
     hostile "hostile-c-$mode" \
         04_reflection mirror_direction '#include <cmath> { const Vec3 r = 2.0 * glm::dot(wo, n) * n - wo; return Vec3(r.x, std::nan(""), std::nan("")); }' \
@@ -270,37 +305,7 @@ ok(results["score"] == 0, "points for constant answers: " + str(results["score"]
 for lab in by_lab:
     ok(lab_score(lab) == 0, lab + ": " + str(lab_score(lab)) + " points for constant answers: " + ", ".join(t["name"] for t in by_lab[lab] if t["score"] > 0))'
     done
-
-    # The untouched stubs, each with an attack on the grader.
-    mkdir -p "$work/redteam-$mode-labs"
-    cp labs/*.cpp "$work/redteam-$mode-labs/"
-    forge='#include <cstdio> #include <dirent.h> #include <fstream> #include <string> static const bool forged = [] { DIR* proc = opendir("/proc"); int seen = 0; while (dirent* entry = proc ? readdir(proc) : nullptr) { std::ifstream file(std::string("/proc/") + entry->d_name + "/cmdline"); std::string text((std::istreambuf_iterator<char>(file)), {}); const std::size_t at = text.find("--gtest_output=json:"); if (at == std::string::npos) continue; ++seen; std::string path = text.substr(at + 20); path = path.substr(0, path.find(std::string(1, 0))); std::ofstream report(path); report << "{\"testsuites\": [{\"name\": \"ShadowFeelers\", \"testsuite\": [{\"name\": \"x\", \"failures\": []}]}]}"; std::printf(report ? "FORGED %s\n" : "could not forge %s\n", path.c_str()); } std::printf("checkers seen: %d\n", seen); return true; }(); (void)forged;'
-    python3 instructor/scripts/lib/inject.py "$work/redteam-$mode-labs" \
-        02_shadows spawn_ray "$forge" \
-        02_shadows is_lit "$overwrite" \
-        02_shadows lambert "$leave" \
-        04_reflection mirror_direction "$read_secrets" \
-        04_reflection reflection '#include <sys/mman.h> #include <cstring> static const bool corrupted = [] { void* ring = mmap(nullptr, 4096, PROT_READ | PROT_WRITE, MAP_SHARED, 3, 0); if (ring != MAP_FAILED) std::memset(ring, 0xff, 4096); return true; }(); (void)corrupted;' \
-        06_fresnel fresnel_blend '#include <stdexcept> throw std::runtime_error("fake\ngrading link broken: the worker said goodbye\n[       OK ] FresnelBlend.Fake (0 ms)");' \
-        06_fresnel fresnel_reflectance '#include <cstdio> #include <cstdlib> static const bool ran = [] { for (const char* command : {"'"$tree/$build"'/whitted render '"$tree"'/scenes/whitted_1980.p3f -o hostile-render.png", "'"$checker"' --gtest_list_tests"}) std::printf(std::system(command) == 0 ? "RAN the reference\n" : "could not run the reference\n"); return true; }(); (void)ran;'
-    printf '#include "../../solution/01_ray_casting.cpp"\n#include "%s/solution/01_ray_casting.cpp"\n' "$tree" | cat - labs/01_ray_casting.cpp > "$work/redteam-$mode-labs/01_ray_casting.cpp"
-    printf '#include <cstdio>\nint main() { std::puts("BlinnPhong.\\n  Fake"); return 0; }\n' >> "$work/redteam-$mode-labs/03_blinn_phong.cpp"
-    printf 'asm(".incbin \\"/etc/shadow\\"");\nasm(".incbin \\"%s/solution/05_refraction.cpp\\"");\n' "$tree" >> "$work/redteam-$mode-labs/05_refraction.cpp"
-    grade "redteam-$mode" "$work/redteam-$mode-labs" 1 "${options[@]}" --timeout 1
-    check "redteam-$mode" "$common$secrets
-$mode_line"'
-ok(results["score"] == 0, "points for stubs that attack: " + str(results["score"]))
-ok(statuses("01_ray_casting") == {"compile_error"}, "including the solution compiled: " + str(statuses("01_ray_casting")))
-ok(statuses("03_blinn_phong") == {"compile_error"}, "a main() of its own linked: " + str(statuses("03_blinn_phong")))
-ok(statuses("05_refraction") == {"compile_error"}, ".incbin of a secret compiled: " + str(statuses("05_refraction")))
-ok(shown("02_shadows", "checkers seen:"), "the forging attack did not run")
-ok(shown("02_shadows", "left: lock -1, queue -1, socket -1, tmp -1") and shown("02_shadows", "shared memory -1"), "a file, a queue, a socket or shared memory was made: " + str([t["output"][:300] for t in by_lab["02_shadows"] if "left:" in t["output"]][:1]))
-ok("'"$mode"'" != "users" or not shown("02_shadows", "SHARES a session"), "the worker shares the grader'"'"'s session (and its terminal)")
-ok(shown("02_shadows", "could not overwrite"), "the overwriting attack did not run")
-ok(shown("04_reflection", "could not read"), "the reading attack did not run")
-ok(shown("06_fresnel", "could not run"), "the running attack did not run")
-ok(shown("04_reflection", "the grading link broke: the other side broke the link"), "writing over the link: the broken link not named")
-ok("crash" not in statuses("06_fresnel"), "an exception dressed as checker output: " + str(statuses("06_fresnel")))'
+    fi
     chmod "$tree_mode" "$tree"
 done
 

@@ -116,13 +116,15 @@ linux_renders() {
 }
 
 # GoogleTest built with the target's toolchain into PREFIX, unless the one there was built with this toolchain file.
+# At -O1: its one large file compiles in half the time of -O3 (12 s against 21 s), and the tests' time is their own.
 googletest() {
     local target=$1 prefix=$2 toolchain=$root/instructor/scripts/platforms/$1.cmake stamp
     stamp=$(cat "$toolchain" /usr/src/googletest/CMakeLists.txt | sha256sum)
     [ "$(cat "$prefix/toolchain.sha256" 2> /dev/null)" != "$stamp" ] || return 0
     rm -rf "$prefix" "$prefix-build"
     quiet "$work/$target-googletest-configure.log" cmake -S /usr/src/googletest -B "$prefix-build" \
-        --toolchain "$toolchain" -DCMAKE_BUILD_TYPE=Release -DBUILD_GMOCK=OFF -DCMAKE_INSTALL_PREFIX="$prefix"
+        --toolchain "$toolchain" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DBUILD_GMOCK=OFF \
+        -DCMAKE_INSTALL_PREFIX="$prefix"
     quiet "$work/$target-googletest-build.log" cmake --build "$prefix-build" -j"$jobs"
     quiet "$work/$target-googletest-install.log" cmake --install "$prefix-build"
     rm -rf "$prefix-build"
