@@ -86,12 +86,20 @@ function(whitted_lab_pch lab)
   get_filename_component(folder ${WHITTED_LAB_PCH} DIRECTORY)
   file(MAKE_DIRECTORY ${folder})
   file(WRITE ${wrapper} "#include \"whitted/labs.hpp\"\n")
-  # Not lab-pch/ itself: the header is read, not an older .gch.
-  set(includes $<FILTER:$<TARGET_PROPERTY:${lab},INCLUDE_DIRECTORIES>,EXCLUDE,/lab-pch$>)
+  # The folders a lab file's compile searches (not lab-pch/ itself: the header is read, not an older .gch): the
+  # framework's, and GLM's as a system folder, as CMake gives it (no warning from a library's headers), unless it
+  # is one of the compiler's own.
+  set(includes -I${PROJECT_SOURCE_DIR}/framework/include)
+  get_target_property(glm_includes glm::glm INTERFACE_INCLUDE_DIRECTORIES)
+  foreach(folder IN LISTS glm_includes)
+    if(NOT folder IN_LIST CMAKE_CXX_IMPLICIT_INCLUDE_DIRECTORIES)
+      list(APPEND includes -isystem ${folder})
+    endif()
+  endforeach()
   set(definitions $<TARGET_PROPERTY:${lab},COMPILE_DEFINITIONS>)
   add_custom_command(OUTPUT ${WHITTED_LAB_PCH}
     COMMAND ${CMAKE_CXX_COMPILER} ${flags} $<TARGET_PROPERTY:${lab},COMPILE_OPTIONS>
-            "$<$<BOOL:${definitions}>:-D$<JOIN:${definitions},;-D>>" "-I$<JOIN:${includes},;-I>"
+            "$<$<BOOL:${definitions}>:-D$<JOIN:${definitions},;-D>>" ${includes}
             -x c++-header ${wrapper} -o ${WHITTED_LAB_PCH}
     DEPENDS ${headers} COMMENT "Precompiling whitted/labs.hpp for the lab files" COMMAND_EXPAND_LISTS VERBATIM)
   add_custom_target(whitted_lab_pch DEPENDS ${WHITTED_LAB_PCH})
