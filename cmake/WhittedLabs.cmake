@@ -73,14 +73,21 @@ else()
   set(WHITTED_LAB_PCH "")
 endif()
 
+# whitted_lab_flags(OUT): the compiler flags of a lab file's compile that come from the build type and the
+# standard, before its target's options: the .gch below and the grading kit's compile share them.
+function(whitted_lab_flags out)
+  string(TOUPPER "${CMAKE_BUILD_TYPE}" type)
+  separate_arguments(flags UNIX_COMMAND "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${type}} ${CMAKE_CXX20_STANDARD_COMPILE_OPTION}")
+  set(${out} ${flags} PARENT_SCOPE)
+endfunction()
+
 # whitted_lab_pch(LAB): the rule for WHITTED_LAB_PCH (target whitted_lab_pch), with the options lab object LAB
 # compiles with.
 function(whitted_lab_pch lab)
   if(NOT WHITTED_LAB_PCH)
     return()
   endif()
-  string(TOUPPER "${CMAKE_BUILD_TYPE}" type)
-  separate_arguments(flags UNIX_COMMAND "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${type}} ${CMAKE_CXX20_STANDARD_COMPILE_OPTION}")
+  whitted_lab_flags(flags)
   file(GLOB_RECURSE headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/framework/include/whitted/*.hpp)
   set(wrapper ${PROJECT_BINARY_DIR}/lab-pch/labs_pch.hpp)
   get_filename_component(folder ${WHITTED_LAB_PCH} DIRECTORY)

@@ -141,8 +141,8 @@ endfunction()
 # own, so that the worker never sees this build. Target grading_parts builds
 # them all (the grader brings it up to date before each grading).
 function(whitted_grading_kit)
+  whitted_lab_flags(flags)
   string(TOUPPER "${CMAKE_BUILD_TYPE}" type)
-  separate_arguments(flags UNIX_COMMAND "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${type}} ${CMAKE_CXX20_STANDARD_COMPILE_OPTION}")
   separate_arguments(link_flags UNIX_COMMAND "${CMAKE_EXE_LINKER_FLAGS} ${CMAKE_EXE_LINKER_FLAGS_${type}}")
   set(lab student_01_ray_casting)
   set(text "# whitted grade's kit for building workers (instructor/cmake/WhittedSplit.cmake); one item a line\n")

@@ -5,8 +5,8 @@
 //   check_<lab> --worker=PROGRAM [gtest options]     start the worker here (CTest, by hand)
 //
 // whitted_remote_labs is the set of labs the worker answers, as bits 1..N (lab k is bit k), defined by each
-// checker's own one-line file (instructor/cmake/WhittedSplit.cmake): this file compiles once for every checker. With WHITTED_LINK_REPORT=<file> in the environment, a
-// broken link's reason is also written to that file (for the grader), then the
+// checker's own one-line file (instructor/cmake/WhittedSplit.cmake): this file compiles once for every checker.
+// With WHITTED_LINK_REPORT=<file> in the environment, a broken link's reason is also written to that file (for the grader), then the
 // line "during box_entry() (labs/10_bvh.cpp)" when a call to the worker was in progress. Exit
 // code: GoogleTest's (0 all passed, 1 a failure), or 3 when the link broke (the worker died, stalled, or broke the protocol) or
 // the worker ended badly: then no test of this run may count as passed.
