@@ -5,9 +5,11 @@
 #include "whitted/image.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace whitted::detail {
 
@@ -25,6 +27,17 @@ inline constexpr std::size_t kMaxImagePixels = std::size_t{1} << 26;
 /// non-finite PFM value.
 Image decode_image(std::string_view bytes, ImageFormat format, const std::filesystem::path& path,
                    std::size_t max_pixels = kMaxImagePixels);
+
+/// An 8-bit RGB picture as PNG and JPEG files hold it: row-major, top row first.
+struct Rgb8Image {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgb; // width x height x 3 values
+};
+
+/// Reads a PNG or JPEG file as 8-bit RGB (a skybox face) straight from its decoder, without the detour
+/// through linear colour (a 2048 x 2048 face's 100 MB of doubles). Throws ImageError as read_image does,
+/// and for a file of another format.
+Rgb8Image read_rgb8(const std::filesystem::path& path);
 
 /// "path: what" as an ImageError, the one shape of every image error message.
 ImageError image_error(const std::filesystem::path& path, const std::string& what);

@@ -1,5 +1,5 @@
-// Reading PNG, JPEG, PPM (P6 and P3) and PFM (PF and Pf) files into linear images.
-// Every malformed file becomes an ImageError "path: what is wrong".
+// Reading PNG, JPEG, PPM (P6 and P3) and PFM (PF and Pf) files into linear images, and PNG and JPEG files
+// into 8-bit pictures (skybox faces). Every malformed file becomes an ImageError "path: what is wrong".
 #include "double_from_chars.hpp"
 #include "image_format.hpp"
 #include "printable.hpp"
@@ -244,10 +244,10 @@ void check_png_chunks(std::string_view bytes, const std::filesystem::path& path)
     }
 }
 
-/// Reads a PNG (any bit depth and channel count) or a baseline / progressive
-/// JPEG as 8-bit RGB, v / 255, with stb_image.
-Image read_with_stb(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels,
-                    const std::string& kind) {
+/// Decodes a PNG (any bit depth and channel count) or a baseline / progressive
+/// JPEG to 8-bit RGB with stb_image.
+detail::Rgb8Image decode_with_stb(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels,
+                                  const std::string& kind) {
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw image_error(path, kind + " file too large");
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int size = static_cast<int>(bytes.size());
@@ -264,24 +264,28 @@ Image read_with_stb(std::string_view bytes, const std::filesystem::path& path, s
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(data, size, &width, &height, &channels, 3), stbi_image_free);
     if (!pixels) throw image_error(path, "cannot decode " + kind + " (" + stb_reason() + ")");
-    Image image(width, height);
-    for (std::size_t i = 0; i < image.pixels.size() * 3; ++i) {
-        image.pixels[i / 3][static_cast<int>(i % 3)] = pixels.get()[i] / 255.0;
-    }
+    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
+    return {width, height, std::vector<std::uint8_t>(pixels.get(), pixels.get() + count)};
+}
+
+/// The 8-bit picture as linear colour: v / 255.
+Image to_image(const detail::Rgb8Image& picture) {
+    Image image(picture.width, picture.height);
+    for (std::size_t i = 0; i < picture.rgb.size(); ++i) image.pixels[i / 3][static_cast<int>(i % 3)] = picture.rgb[i] / 255.0;
     return image;
 }
 
-Image read_png(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
+detail::Rgb8Image decode_png(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
     static constexpr std::string_view signature("\x89PNG\r\n\x1a\n", 8);
     if (!bytes.starts_with(signature)) throw image_error(path, "not a PNG file (bad signature)");
     check_png_chunks(bytes, path);
-    return read_with_stb(bytes, path, max_pixels, "PNG");
+    return decode_with_stb(bytes, path, max_pixels, "PNG");
 }
 
-Image read_jpeg(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
+detail::Rgb8Image decode_jpeg(std::string_view bytes, const std::filesystem::path& path, std::size_t max_pixels) {
     static constexpr std::string_view signature("\xff\xd8\xff", 3);
     if (!bytes.starts_with(signature)) throw image_error(path, "not a JPEG file (bad signature)");
-    return read_with_stb(bytes, path, max_pixels, "JPEG");
+    return decode_with_stb(bytes, path, max_pixels, "JPEG");
 }
 
 } // namespace
@@ -290,12 +294,21 @@ Image detail::decode_image(std::string_view bytes, ImageFormat format, const std
                            std::size_t max_pixels) {
     if (bytes.empty()) throw image_error(path, "empty file");
     switch (format) {
-    case ImageFormat::png: return read_png(bytes, path, max_pixels);
+    case ImageFormat::png: return to_image(decode_png(bytes, path, max_pixels));
     case ImageFormat::ppm: return read_ppm(bytes, path, max_pixels);
     case ImageFormat::pfm: return read_pfm(bytes, path, max_pixels);
-    case ImageFormat::jpeg: return read_jpeg(bytes, path, max_pixels);
+    case ImageFormat::jpeg: return to_image(decode_jpeg(bytes, path, max_pixels));
     }
     throw image_error(path, "unknown image format");
+}
+
+detail::Rgb8Image detail::read_rgb8(const std::filesystem::path& path) {
+    const std::string bytes = read_file(path);
+    const ImageFormat format = image_format(path);
+    if (bytes.empty()) throw image_error(path, "empty file");
+    if (format == ImageFormat::png) return decode_png(bytes, path, kMaxImagePixels);
+    if (format == ImageFormat::jpeg) return decode_jpeg(bytes, path, kMaxImagePixels);
+    throw image_error(path, "not a PNG or JPEG file (only those hold 8-bit pictures)");
 }
 
 Image read_image(const std::filesystem::path& path) {

@@ -1,10 +1,15 @@
 #include "whitted/skybox.hpp"
 
+#include "image_format.hpp"
 #include "whitted/image.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstring>
+#include <exception>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 #include <system_error>
 
@@ -54,28 +59,66 @@ Skybox::Skybox(std::array<SkyboxFace, 6> faces) : faces_(std::move(faces)) {
             throw std::invalid_argument("Skybox: a face's size does not match its values");
 }
 
+namespace {
+
+// The file of a face in the folder: STEM.jpg, .jpeg or .png; throws ImageError naming STEM.jpg if there is none.
+std::filesystem::path face_file(const std::filesystem::path& folder, std::string_view name) {
+    const std::string stem(name);
+    for (const char* extension : {".jpg", ".jpeg", ".png"}) {
+        std::error_code error;
+        if (std::filesystem::exists(folder / (stem + extension), error)) return folder / (stem + extension);
+    }
+    throw ImageError((folder / (stem + ".jpg")).string() + ": no such file (the skybox face '" + stem + "' must be " +
+                     stem + ".jpg, " + stem + ".jpeg or " + stem + ".png)");
+}
+
+// A face file's picture as the lookup stores it: its rows bottom first.
+SkyboxFace read_face(const std::filesystem::path& file) {
+    const detail::Rgb8Image picture = detail::read_rgb8(file);
+    SkyboxFace face{picture.width, picture.height, std::vector<std::uint8_t>(picture.rgb.size())};
+    const std::size_t row = static_cast<std::size_t>(picture.width) * 3;
+    for (int y = 0; y < picture.height; ++y)
+        std::memcpy(face.rgb.data() + row * static_cast<std::size_t>(picture.height - 1 - y),
+                    picture.rgb.data() + row * static_cast<std::size_t>(y), row);
+    return face;
+}
+
+} // namespace
+
 Skybox Skybox::load(const std::filesystem::path& folder) {
     std::error_code folder_error;
     if (!std::filesystem::is_directory(folder, folder_error))
         throw ImageError(folder.string() + ": no such folder (it should hold the six skybox faces right, left, top, "
                                            "bottom, front and back, as .jpg or .png)");
-    std::array<Image, 6> faces;
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const std::string stem(kCubeFaceNames[f]);
-        std::filesystem::path found;
-        std::error_code error;
-        for (const char* extension : {".jpg", ".jpeg", ".png"}) {
-            if (std::filesystem::exists(folder / (stem + extension), error)) {
-                found = folder / (stem + extension);
-                break;
+    std::array<std::filesystem::path, 6> files;
+    for (std::size_t f = 0; f < files.size(); ++f) files[f] = face_file(folder, kCubeFaceNames[f]);
+    // The six faces decode at once, a thread each up to the CPUs there are: the course's 2048 x 2048 JPEG faces
+    // take most of a scene's loading time. An error is reported for the first face in CubeFace order that has one,
+    // whichever thread saw it first.
+    std::array<SkyboxFace, 6> faces;
+    std::array<std::exception_ptr, 6> errors;
+    std::atomic<std::size_t> next{0};
+    const auto decode = [&] {
+        for (std::size_t f = next++; f < files.size(); f = next++) {
+            try {
+                faces[f] = read_face(files[f]);
+            } catch (...) {
+                errors[f] = std::current_exception();
             }
         }
-        if (found.empty())
-            throw ImageError((folder / (stem + ".jpg")).string() + ": no such file (the skybox face '" + stem +
-                             "' must be " + stem + ".jpg, " + stem + ".jpeg or " + stem + ".png)");
-        faces[f] = read_image(found);
+    };
+    const std::size_t helpers = std::min<std::size_t>(files.size(), std::max(1u, std::thread::hardware_concurrency())) - 1;
+    std::vector<std::thread> threads;
+    try {
+        for (std::size_t t = 0; t < helpers; ++t) threads.emplace_back(decode);
+    } catch (const std::system_error&) {
+        // No thread to be had (a process limit): the threads there are, this one among them, decode the rest.
     }
-    return Skybox(faces);
+    decode();
+    for (std::thread& thread : threads) thread.join();
+    for (const std::exception_ptr& error : errors)
+        if (error) std::rethrow_exception(error);
+    return Skybox(std::move(faces));
 }
 
 Color Skybox::lookup(const Vec3& direction) const {

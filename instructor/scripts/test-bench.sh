@@ -17,3 +17,5 @@ for file in results.md results.json chart.svg; do
 done
 grep -q '^| flake2 ' "$BUILD/bench-results/results.md" || { echo "test-bench: no flake2 row in results.md"; exit 1; }
 echo "bench tools: built, tested, and a tiny benchmark ran"
+# How long a scene with a course-sized skybox takes to load (printed; a figure, not a pass or fail).
+BUILD_DIR=$BUILD JOBS=$JOBS bash instructor/scripts/skybox-load.sh | tail -1

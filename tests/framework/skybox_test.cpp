@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 using namespace whitted;
 namespace fs = std::filesystem;
@@ -175,6 +177,56 @@ TEST_F(SkyboxFiles, LoadsTheSixFacesFromJpegOrPng) {
     const Skybox sky = Skybox::load(dir_ / "sky");
     const Vec3 looks[] = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     for (int f = 0; f < 6; ++f) EXPECT_NEAR(sky.lookup(looks[f]).b * 255.0, (f + 1) * 40, 2.0) << kCubeFaceNames[f];
+}
+
+// The faces are decoded straight to 8-bit values, six at once (Skybox::load): each must hold the very bytes that
+// reading its file as a linear image and storing that gives (the Image constructor: v / 255 back to v).
+TEST_F(SkyboxFiles, EachFaceHoldsTheBytesOfItsPictureJpegOrPng) {
+    std::array<Image, 6> pictures;
+    for (int f = 0; f < 6; ++f) {
+        const std::string stem(kCubeFaceNames[f]);
+        const int width = 5 + f, height = 3 + 2 * f; // a different size each, so that no row or face is swapped unseen
+        std::vector<unsigned char> rgb(static_cast<std::size_t>(width * height * 3));
+        for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<unsigned char>((i * 37 + f * 11) % 251);
+        const fs::path file = dir_ / "sky" / (stem + (f % 2 == 0 ? ".jpg" : ".png"));
+        if (f % 2 == 0) {
+            std::string jpeg;
+            const auto append = [](void* to, void* data, int size) {
+                static_cast<std::string*>(to)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+            };
+            ASSERT_NE(stbi_write_jpg_to_func(append, &jpeg, width, height, 3, rgb.data(), 90), 0);
+            std::ofstream(file, std::ios::binary) << jpeg;
+        } else {
+            Image image(width, height);
+            for (std::size_t i = 0; i < rgb.size(); ++i) image.pixels[i / 3][static_cast<int>(i % 3)] = rgb[i] / 255.0;
+            write_image(image, file);
+        }
+        pictures[f] = read_image(file);
+    }
+    const Skybox loaded = Skybox::load(dir_ / "sky");
+    const Skybox expected(pictures);
+    for (int f = 0; f < 6; ++f) {
+        EXPECT_EQ(loaded.faces()[f].width, expected.faces()[f].width) << kCubeFaceNames[f];
+        EXPECT_EQ(loaded.faces()[f].height, expected.faces()[f].height) << kCubeFaceNames[f];
+        EXPECT_EQ(loaded.faces()[f].rgb, expected.faces()[f].rgb) << kCubeFaceNames[f];
+    }
+}
+
+// Faces decode at once, in any order: the error told is the first bad face's in the order right, left, top, ...
+TEST_F(SkyboxFiles, OfTwoBadFacesTheFirstInOrderIsNamed) {
+    for (const std::string_view stem : kCubeFaceNames) {
+        const fs::path file = dir_ / "sky" / (std::string(stem) + ".png");
+        if (stem == "top" || stem == "back") std::ofstream(file) << "not a picture";
+        else write_image(plain(Color(0.5)), file);
+    }
+    for (int run = 0; run < 20; ++run) {
+        try {
+            Skybox::load(dir_ / "sky");
+            FAIL() << "expected an ImageError";
+        } catch (const ImageError& error) {
+            EXPECT_EQ(std::string(error.what()).rfind((dir_ / "sky" / "top.png").string() + ": ", 0), 0u) << error.what();
+        }
+    }
 }
 
 TEST_F(SkyboxFiles, AMissingFaceIsNamed) {
