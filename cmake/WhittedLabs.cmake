@@ -170,6 +170,9 @@ function(whitted_renderer target)
   add_executable(${target} $<TARGET_OBJECTS:whitted_app>)
   target_link_libraries(${target} PRIVATE ${A_LABS} ${A_KERNELS} ${A_COMMANDS} whitted_trace whitted_closest_name whitted_framework
                                           whitted_generators CLI11::CLI11)
+  if(TARGET whitted_explore)
+    target_link_libraries(${target} PRIVATE whitted_explore)
+  endif()
   whitted_utf8(${target})
 endfunction()
 

@@ -18,7 +18,7 @@
 # with Wine (Windows), and GoogleTest's sources; for CI on a bare machine.
 set -euo pipefail
 
-packages=(g++ make cmake libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev)
+packages=(g++ make cmake libglm-dev libgtest-dev libstb-dev libcli11-dev nlohmann-json3-dev libcpp-httplib-dev)
 optional=()
 case "${1:-}" in
     "") ;;

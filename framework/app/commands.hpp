@@ -26,6 +26,9 @@ Command add_diff_command(CLI::App& app);
 /// `whitted generate KIND [--level N] [-o FILE]`
 Command add_generate_command(CLI::App& app);
 
+/// `whitted explore SCENE [--stage K] [--port N]` (without cpp-httplib: says what to install)
+Command add_explore_command(CLI::App& app);
+
 /// `whitted labs [--tsv]`
 Command add_labs_command(CLI::App& app);
 

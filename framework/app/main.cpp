@@ -27,8 +27,8 @@ int main(int argc, char** argv) {
     app.set_version_flag("-V,--version", whitted::version_line(), "Print the version and the build, then exit");
     app.require_subcommand(1);
     std::vector<whitted::Command> commands = {whitted::add_render_command(app), whitted::add_trace_command(app),
-                                              whitted::add_diff_command(app), whitted::add_generate_command(app),
-                                              whitted::add_labs_command(app)};
+                                              whitted::add_diff_command(app), whitted::add_explore_command(app),
+                                              whitted::add_generate_command(app), whitted::add_labs_command(app)};
     for (whitted::Command& command : whitted::add_instructor_commands(app)) commands.push_back(std::move(command));
     commands.push_back(whitted::add_completion_command(app));
 

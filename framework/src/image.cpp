@@ -96,20 +96,27 @@ void write_pfm(const Image& image, const std::filesystem::path& path) {
     finish_writing(out, path);
 }
 
-/// Appends what stb_image_write hands over to the std::ofstream it was given as `context`.
-void append_to_stream(void* context, void* data, int size) {
-    static_cast<std::ofstream*>(context)->write(static_cast<const char*>(data), size);
+/// Appends what stb_image_write hands over to the std::string it was given as `context`.
+void append_to_string(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
 
-/// Writes an 8-bit RGB PNG, encoded by stb_image_write into a file opened here by its
-/// std::filesystem::path, so that any path the platform can name works (non-ASCII on Windows).
-void write_png(const Image& image, const std::filesystem::path& path, Encoding encoding) {
+/// An 8-bit RGB PNG of a checked image, encoded by stb_image_write; empty if it could not encode.
+std::string encode_png(const Image& image, Encoding encoding) {
     const std::vector<unsigned char> bytes = to_bytes(image, encoding);
+    std::string png;
+    if (stbi_write_png_to_func(append_to_string, &png, image.width, image.height, 3, bytes.data(), image.width * 3) == 0)
+        png.clear();
+    return png;
+}
+
+/// Writes an 8-bit RGB PNG into a file opened here by its std::filesystem::path, so that any
+/// path the platform can name works (non-ASCII on Windows).
+void write_png(const Image& image, const std::filesystem::path& path, Encoding encoding) {
     std::ofstream out = open_for_writing(path);
-    if (stbi_write_png_to_func(append_to_stream, &out, image.width, image.height, 3, bytes.data(), image.width * 3) ==
-        0) {
-        throw image_error(path, "cannot write PNG file");
-    }
+    const std::string png = encode_png(image, encoding);
+    if (png.empty()) throw image_error(path, "cannot write PNG file");
+    out.write(png.data(), static_cast<std::streamsize>(png.size()));
     finish_writing(out, path);
 }
 
@@ -128,6 +135,16 @@ unsigned char to_byte(double value, Encoding encoding) {
         v = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
     }
     return static_cast<unsigned char>(std::lround(v * 255.0));
+}
+
+std::string png_bytes(const Image& image, Encoding encoding) {
+    if (image.width <= 0 || image.height <= 0 || image.pixels.size() != static_cast<std::size_t>(image.width) * image.height)
+        throw ImageError("cannot encode an empty or inconsistent image as PNG");
+    if (const std::size_t bad = count_non_finite(image); bad > 0)
+        throw ImageError("refusing to encode " + std::to_string(bad) + " pixel(s) with NaN or infinite values as PNG");
+    std::string png = encode_png(image, encoding);
+    if (png.empty()) throw ImageError("cannot encode the image as PNG");
+    return png;
 }
 
 void write_image(const Image& image, const std::filesystem::path& path, Encoding encoding) {

@@ -36,6 +36,20 @@ struct TraceContext {
     std::optional<ShownSample> sample{}; // none: the pixel is one ray through its centre, the tree's eye ray
 };
 
+/// One pixel's traced ray tree, and which of its samples it is of.
+struct TracedPixel {
+    RayTree tree;
+    std::optional<ShownSample> sample; // none: one ray through the pixel's centre
+};
+
+/// Traces pixel (x, y) of an image `height` rows high (y from the top) as `whitted render` computes it: from
+/// stage 7 on (when settings has samples), sample `sample` (0 .. spp - 1, checked by the caller) where
+/// pixel_color() traces it, with the pixel's value; before, one ray through the pixel's centre.
+TracedPixel trace_pixel_tree(const Scene& scene, const RenderSettings& settings, int x, int y, int height, int sample);
+
+/// The samples a pixel has at these settings: spp from stage 7 (lab 7) on, none before.
+int traced_samples(const RenderSettings& settings);
+
 /// "sphere (scenes/x.p3f:12)": the shape and the scene-file line that made it.
 std::string object_name(const TraceContext& context, std::uint32_t primitive);
 

@@ -62,8 +62,7 @@ int run_trace(const TraceOptions& options) {
     settings.max_depth = options.max_depth.value_or(loaded.data.max_depth);
     settings.min_weight = options.min_weight;
     settings.samples_per_pixel = options.samples.value_or(loaded.data.samples_per_pixel);
-    // As render: samples from lab 7 on, one ray through the pixel's centre before.
-    const int samples = settings.stage >= stage_number(Stage::anti_aliasing) ? settings.samples_per_pixel : 0;
+    const int samples = traced_samples(settings);
     if (options.sample && samples == 0) {
         std::fprintf(stderr, "whitted: --sample %d: %s, so there are no samples to pick\n", *options.sample,
                      settings.samples_per_pixel == 0 ? "the scene traces one ray through each pixel's centre (no spp; --spp N asks for N samples)"
@@ -82,25 +81,9 @@ int run_trace(const TraceOptions& options) {
     const BvhChoice bvh = settings.stage >= stage_number(Stage::bvh) ? BvhChoice::lab : BvhChoice::framework;
     const Scene scene(std::move(loaded.data), linked_leaf_kernels(), bvh);
 
-    // The same pixel as `whitted render` computes: rows go down, the viewport's y goes up.
-    const int row = height - 1 - y;
-    RayStats stats;
-    RayTree tree;
-    const Tracer tracer(scene, settings, stats, &tree);
-    TraceContext context{scene, settings, options.scene, x, y, width, height, std::nullopt};
-    if (samples > 0) {
-        // One sample's tree, where pixel_color() traces it; the pixel's value, the average of all its samples,
-        // from a tracer that records nothing.
-        const PixelSample sample{x, row, options.sample.value_or(0)};
-        const Vec2 position = sample_position(sample, samples);
-        tracer.trace_sample(sample, position.x, position.y);
-        RayStats pixel_stats;
-        const Tracer pixel_tracer(scene, settings, pixel_stats);
-        context.sample = ShownSample{sample.index, samples, position - Vec2(x, row), sampled_pixel_color(pixel_tracer, x, row)};
-    } else {
-        tracer.trace_pixel(x + 0.5, row + 0.5);
-    }
-
+    TracedPixel traced = trace_pixel_tree(scene, settings, x, y, height, options.sample.value_or(0));
+    const RayTree& tree = traced.tree;
+    const TraceContext context{scene, settings, options.scene, x, y, width, height, traced.sample};
     if (options.json == "-") {
         if (!write_json(ray_tree_json(tree, context), "-")) return exit_code::bad_input;
     } else {

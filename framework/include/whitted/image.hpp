@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace whitted {
@@ -42,6 +43,10 @@ std::size_t count_non_finite(const Image& image);
 /// Writes the image; the format comes from the extension (.png, .ppm, .pfm).
 /// Throws ImageError for another extension (.jpg is read only), a non-finite pixel or an I/O failure.
 void write_image(const Image& image, const std::filesystem::path& path, Encoding encoding = Encoding::linear);
+
+/// The image as the bytes of an 8-bit PNG file (to send rather than write). Throws ImageError for an
+/// empty image or a non-finite pixel.
+std::string png_bytes(const Image& image, Encoding encoding = Encoding::linear);
 
 /// Reads a .png, .jpg / .jpeg, .ppm (P6 or P3) or .pfm file. 8-bit values v become v / 255
 /// (no gamma decoding). Throws ImageError with the reason.
