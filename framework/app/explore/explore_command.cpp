@@ -31,7 +31,9 @@ struct ExploreOptions {
 int run_explore(const ExploreOptions& options) {
     LoadedScene loaded = load_scene(options.scene);
     for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-    const auto [width, height] = output_size(loaded.data.camera, std::nullopt, std::nullopt);
+    // Plain variables, not a structured binding: the lambdas below capture them (Apple clang cannot capture a binding).
+    const std::pair<int, int> size = output_size(loaded.data.camera, std::nullopt, std::nullopt);
+    const int width = size.first, height = size.second;
     if (const std::string problem = check_output_size(width, height); !problem.empty()) {
         std::fprintf(stderr, "whitted: %s\n", problem.c_str());
         return exit_code::bad_input;
