@@ -216,10 +216,7 @@ Command add_render_command(CLI::App& app) {
         ->check(CLI::IsMember({"none", "grid", "bvh"}));
     render_command->add_option("--threads", options->threads, "Rendering threads; 0 = one per core (default 0)")
         ->check(CLI::Range(0, 1024));
-    render_command->add_option("--stage", options->stage,
-                               "Use the features of labs 1..K only: " + stage_list() +
-                                   " (default: the highest stage whose labs are done)")
-        ->check(CLI::Range(1, kLabCount));
+    add_stage_option(*render_command, options->stage);
     render_command->add_flag("--stats", options->stats, "Print how many rays of each kind were cast, and rays per second");
     render_command->add_option("--stats-json", options->stats_json,
                                "Also write the timings (parse, build, render), ray counts and sizes as JSON to FILE")

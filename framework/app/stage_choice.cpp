@@ -1,6 +1,7 @@
 #include "stage_choice.hpp"
 
 #include "whitted/lab_status.hpp"
+#include "whitted/lab_table.hpp"
 
 #include <cstdio>
 #include <string>
@@ -57,6 +58,12 @@ std::optional<int> choose_stage(std::optional<int> asked, std::optional<Pass> pa
                      missing_labs(labs, kLabCount).c_str());
     }
     return ready;
+}
+
+void add_stage_option(CLI::App& command, std::optional<int>& stage) {
+    command.add_option("--stage", stage,
+                       "Use the features of labs 1..K only: " + stage_list() + " (default: the highest stage whose labs are done)")
+        ->check(CLI::Range(1, kLabCount));
 }
 
 } // namespace whitted

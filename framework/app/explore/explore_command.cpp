@@ -91,9 +91,7 @@ Command add_explore_command(CLI::App& app) {
         "explore", "Render a scene with your labs and show it on a page in your browser, served on this machine only: "
                    "a click on a pixel shows its ray tree.");
     command->add_option("scene", options->scene, "Scene file (.nff or .p3f)")->required();
-    command->add_option("--stage", options->stage,
-                        "Use the features of labs 1..K only: " + stage_list() + " (default: the highest stage whose labs are done)")
-        ->check(CLI::Range(1, kLabCount));
+    add_stage_option(*command, options->stage);
     command->add_option("--port", options->port, "Port on 127.0.0.1 to serve the page on (default 0: a free one)")
         ->check(CLI::Range(0, 65535));
     command->add_option("--threads", options->threads, "Threads for rendering; 0 = one per core")->check(CLI::Range(0, 1024));

@@ -144,9 +144,7 @@ Command add_trace_command(CLI::App& app) {
                         "the pixel's value, the average of them all, is shown too")
         ->type_name("K")
         ->check(CLI::NonNegativeNumber);
-    command->add_option("--stage", options->stage,
-                        "Use the features of labs 1..K only: " + stage_list() + " (default: the highest stage whose labs are done)")
-        ->check(CLI::Range(1, kLabCount));
+    add_stage_option(*command, options->stage);
     command->add_option("--json", options->json, "Also write the tree as JSON to FILE; - writes only the JSON, to the standard output")
         ->type_name("FILE")
         ->check(writable_file_validator());
