@@ -155,20 +155,54 @@ function(whitted_lab_number out lab)
   set(${out} ${number} PARENT_SCOPE)
 endfunction()
 
-# whitted_renderer(TARGET LABS <lab objects> [KERNELS <object>] [COMMANDS <object>]):
+# whitted_renderer(TARGET LABS <lab objects> [KERNELS <object>] [COMMANDS <object>] [LIVE_LABS <folder>]):
 # the `whitted` program with one implementation of the labs. Without KERNELS it
 # links no fast leaf kernels (every intersection goes through the labs' code);
-# without COMMANDS, no instructor commands (no `whitted grade`).
+# without COMMANDS, no instructor commands (no `whitted grade`). With LIVE_LABS (the
+# folder of its lab files), `whitted explore` rebuilds and re-renders when a lab file
+# there is saved: it runs TARGET-explore-worker, the same program built only when
+# explore asks for it (framework/app/explore/live_build.hpp says why).
 function(whitted_renderer target)
-  cmake_parse_arguments(A "" "KERNELS;COMMANDS" "LABS" ${ARGN})
+  cmake_parse_arguments(A "" "KERNELS;COMMANDS;LIVE_LABS" "LABS" ${ARGN})
   if(NOT A_KERNELS)
     set(A_KERNELS whitted_no_leaf_kernels)
   endif()
   if(NOT A_COMMANDS)
     set(A_COMMANDS whitted_no_instructor_commands)
   endif()
+  whitted_program(${target} "${A_LABS}" ${A_KERNELS} ${A_COMMANDS})
+  if(NOT TARGET whitted_explore)
+    return()
+  endif()
+  if(NOT A_LIVE_LABS)
+    target_link_libraries(${target} PRIVATE whitted_no_live_build)
+    return()
+  endif()
+  set(worker ${target}-explore-worker)
+  whitted_program(${worker} "${A_LABS}" ${A_KERNELS} whitted_no_instructor_commands)
+  set_target_properties(${worker} PROPERTIES EXCLUDE_FROM_ALL ON)
+  target_link_libraries(${worker} PRIVATE whitted_no_live_build)
+  set(source ${PROJECT_BINARY_DIR}/explore/${target}_live_build$<CONFIG>.cpp)
+  file(GENERATE OUTPUT ${source} CONTENT
+"// Written by CMake (whitted_renderer in cmake/WhittedLabs.cmake): the build `whitted explore` rebuilds.
+#include \"explore/live_build.hpp\"
+
+namespace whitted {
+
+std::optional<LiveBuild> live_build() {
+    return LiveBuild{R\"path(${CMAKE_COMMAND})path\", R\"path(${PROJECT_BINARY_DIR})path\", \"$<CONFIG>\", \"${worker}\",
+                     R\"path($<TARGET_FILE:${worker}>)path\", R\"path(${A_LIVE_LABS})path\"};
+}
+
+} // namespace whitted
+")
+  target_sources(${target} PRIVATE ${source})
+endfunction()
+
+# whitted_program(TARGET LABS KERNELS COMMANDS): one `whitted` executable (see whitted_renderer).
+function(whitted_program target labs kernels commands)
   add_executable(${target} $<TARGET_OBJECTS:whitted_app>)
-  target_link_libraries(${target} PRIVATE ${A_LABS} ${A_KERNELS} ${A_COMMANDS} whitted_trace whitted_closest_name whitted_framework
+  target_link_libraries(${target} PRIVATE ${labs} ${kernels} ${commands} whitted_trace whitted_closest_name whitted_framework
                                           whitted_generators CLI11::CLI11)
   if(TARGET whitted_explore)
     target_link_libraries(${target} PRIVATE whitted_explore)

@@ -316,4 +316,8 @@ Image read_image(const std::filesystem::path& path) {
     return detail::decode_image(bytes, detail::image_format(path), path);
 }
 
+Image read_png_bytes(std::string_view bytes, const std::string& name) {
+    return detail::decode_image(bytes, detail::ImageFormat::png, name);
+}
+
 } // namespace whitted

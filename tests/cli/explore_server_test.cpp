@@ -18,12 +18,18 @@ constexpr const char* kToken = "0123456789abcdef0123456789abcdef";
 ExploreContent made_up_content() {
     ExploreContent content;
     content.page = "<!doctype html><title>made up</title>";
-    content.scene = [] { return nlohmann::json{{"width", 4}, {"height", 3}}; };
-    content.picture_png = [] { return std::string("\x89PNG made up", 12); };
+    content.state = [] { return nlohmann::json{{"width", 4}, {"height", 3}}; };
+    content.picture_png = [](const std::string& view) {
+        if (view == "nothing") throw ExploreRequestError("no view called 'nothing'");
+        return std::string("\x89PNG made up ", 13) + view;
+    };
     content.tree = [](int x, int y, int sample) -> nlohmann::json {
         if (x == 99) throw ExploreRequestError("pixel (99, 0) is outside");
         if (x == 98) throw std::logic_error("a failure of whitted's own");
         return {{"x", x}, {"y", y}, {"sample", sample}};
+    };
+    content.tree_png = [](int x, int y, int sample) {
+        return std::string("\x89PNG rays ", 10) + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(sample);
     };
     return content;
 }
@@ -55,7 +61,17 @@ TEST_F(ExploreServerTest, WithTheTokenEachRouteAnswers) {
     auto picture = get("/picture.png?" + token);
     ASSERT_TRUE(picture);
     EXPECT_EQ(picture->get_header_value("Content-Type"), "image/png");
-    EXPECT_EQ(picture->body.substr(0, 4), "\x89PNG");
+    EXPECT_EQ(picture->body, std::string("\x89PNG made up picture", 20)); // the view by default
+    auto pass = get("/picture.png?view=normal&" + token);
+    ASSERT_TRUE(pass);
+    EXPECT_EQ(pass->body, std::string("\x89PNG made up normal", 19));
+    auto state = get("/state?" + token);
+    ASSERT_TRUE(state);
+    EXPECT_EQ(state->get_header_value("Content-Type"), "application/json");
+    EXPECT_EQ(nlohmann::json::parse(state->body), (nlohmann::json{{"width", 4}, {"height", 3}}));
+    auto rays = get("/tree.png?x=2&y=1&sample=3&" + token);
+    ASSERT_TRUE(rays);
+    EXPECT_EQ(rays->body, std::string("\x89PNG rays 2 1 3", 15));
     auto tree = get("/tree?x=2&y=1&sample=3&" + token);
     ASSERT_TRUE(tree);
     EXPECT_EQ(tree->status, 200);
@@ -63,7 +79,7 @@ TEST_F(ExploreServerTest, WithTheTokenEachRouteAnswers) {
 }
 
 TEST_F(ExploreServerTest, WithoutTheRightTokenEveryRouteIsRefused) {
-    for (const std::string path : {"/", "/picture.png", "/scene", "/tree?x=1&y=1", "/nothing"}) {
+    for (const std::string path : {"/", "/picture.png", "/picture.png?view=goal", "/state", "/tree?x=1&y=1", "/tree.png?x=1&y=1", "/nothing"}) {
         for (const std::string& token : {std::string(), std::string("token="), std::string("token=") + std::string(kToken).substr(1),
                                         std::string("token=") + kToken + "0", std::string("TOKEN=") + kToken}) {
             const std::string asked = path + (path.find('?') == std::string::npos ? "?" : "&") + token;
@@ -85,6 +101,8 @@ TEST_F(ExploreServerTest, ABadRequestGetsItsReasonAndTheServerGoesOn) {
                  {"/tree?x=abc&y=0", 400, "x must be a whole number, not 'abc'"},
                  {"/tree?x=1", 400, "the request has no y"},
                  {"/tree?x=1&y=99999999999999999999", 400, "y must be a whole number, not '99999999999999999999'"},
+                 {"/tree.png?x=1&y=-", 400, "y must be a whole number, not '-'"},
+                 {"/picture.png?view=nothing", 400, "no view called 'nothing'"},
                  {"/tree?x=98&y=0", 500, "a failure of whitted's own"}};
     for (const auto& c : cases) {
         auto answer = get(c.path + token);

@@ -2,21 +2,19 @@
 // served on this machine only, where a click on a pixel shows its ray tree.
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "child_process.hpp"
 #include "explore/explore_page.hpp"
 #include "explore/explore_server.hpp"
+#include "explore/explore_session.hpp"
+#include "explore/live_build.hpp"
 #include "image_options.hpp"
 #include "stage_choice.hpp"
-#include "trace/ray_tree_report.hpp"
-#include "whitted/engine/leaf_kernels.hpp"
-#include "whitted/image_pictures.hpp"
-#include "whitted/lab_table.hpp"
-#include "whitted/render.hpp"
 #include "whitted/scene_loader.hpp"
 
-#include <chrono>
+#include <atomic>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
-#include <thread>
 
 namespace whitted {
 namespace {
@@ -26,52 +24,45 @@ struct ExploreOptions {
     std::optional<int> stage;
     int port = 0;
     int threads = 0;
+    bool no_rebuild = false;
+};
+
+// A folder of its own for the worker's files, removed at the end.
+struct ScratchFolder {
+    std::filesystem::path path;
+    explicit ScratchFolder(const std::string& token)
+        : path(std::filesystem::temp_directory_path() / ("whitted-explore-" + token.substr(0, 12))) {
+        std::filesystem::create_directories(path);
+    }
+    ~ScratchFolder() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path, ignored);
+    }
 };
 
 int run_explore(const ExploreOptions& options) {
+    // The scene's errors first, before anything is served: the student fixes them in the file.
     LoadedScene loaded = load_scene(options.scene);
     for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-    // Plain variables, not a structured binding: the lambdas below capture them (Apple clang cannot capture a binding).
-    const std::pair<int, int> size = output_size(loaded.data.camera, std::nullopt, std::nullopt);
-    const int width = size.first, height = size.second;
+    const auto [width, height] = output_size(loaded.data.camera, std::nullopt, std::nullopt);
     if (const std::string problem = check_output_size(width, height); !problem.empty()) {
         std::fprintf(stderr, "whitted: %s\n", problem.c_str());
         return exit_code::bad_input;
     }
-    loaded.data.camera = loaded.data.camera.with_resolution(width, height);
-    const std::optional<int> stage = choose_stage(options.stage);
-    if (!stage) return exit_code::bad_input; // labs not done yet: choose_stage said which
-    RenderSettings settings;
-    settings.stage = *stage;
-    settings.max_depth = loaded.data.max_depth;
-    settings.samples_per_pixel = loaded.data.samples_per_pixel;
-    // The scene as `whitted render` builds it: from lab 10 on, walked with the lab's BVH.
-    const BvhChoice bvh = settings.stage >= stage_number(Stage::bvh) ? BvhChoice::lab : BvhChoice::framework;
-    const Scene scene(std::move(loaded.data), linked_leaf_kernels(), bvh);
-    std::fprintf(stderr, "whitted explore: rendering %s at stage %d\n", options.scene.c_str(), settings.stage);
-    const Image picture = render(scene, settings, options.threads).image;
-    const std::string png = png_bytes(count_non_finite(picture) == 0 ? picture : with_broken_pixels_marked(picture));
+    const std::string token = random_token();
+    const ScratchFolder scratch(token);
+    ExploreSettings settings{options.scene, options.stage, options.threads, own_executable(), live_build(), scratch.path};
+    if (options.no_rebuild) settings.live.reset();
+    if (settings.live) settings.worker = settings.live->worker;
+    ExploreSession session(std::move(settings));
 
     ExploreContent content;
     content.page = explore_page();
-    content.scene = [&] {
-        return nlohmann::json{{"scene", options.scene}, {"stage", settings.stage}, {"width", width}, {"height", height},
-                              {"samples", traced_samples(settings)}};
-    };
-    content.picture_png = [&] { return png; };
-    content.tree = [&](int x, int y, int sample) {
-        if (x < 0 || y < 0 || x >= width || y >= height)
-            throw ExploreRequestError("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
-                                      std::to_string(width) + "x" + std::to_string(height) + " picture");
-        const int samples = traced_samples(settings);
-        if (sample < 0 || sample >= std::max(samples, 1))
-            throw ExploreRequestError("sample " + std::to_string(sample) + ": this pixel has " +
-                                      (samples > 0 ? std::to_string(samples) + " samples, 0 to " + std::to_string(samples - 1)
-                                                   : std::string("one ray through its centre (sample 0)")));
-        const TracedPixel traced = trace_pixel_tree(scene, settings, x, y, height, sample);
-        return ray_tree_json(traced.tree, TraceContext{scene, settings, options.scene, x, y, width, height, traced.sample});
-    };
-    ExploreServer server(std::move(content), random_token());
+    content.state = [&] { return session.state(); };
+    content.picture_png = [&](const std::string& view) { return session.picture(view); };
+    content.tree = [&](int x, int y, int sample) { return session.tree(x, y, sample); };
+    content.tree_png = [&](int x, int y, int sample) { return session.tree_picture(x, y, sample); };
+    ExploreServer server(std::move(content), token);
     try {
         server.start(options.port);
     } catch (const std::runtime_error& error) {
@@ -79,8 +70,12 @@ int run_explore(const ExploreOptions& options) {
         return exit_code::bad_input;
     }
     std::printf("whitted explore: open %s in your browser (this machine only; Ctrl-C stops)\n", server.url().c_str());
+    if (const std::optional<LiveBuild> live = options.no_rebuild ? std::nullopt : live_build())
+        std::printf("whitted explore: watching %s: a save rebuilds and renders again\n", live->labs_dir.string().c_str());
     std::fflush(stdout);
-    for (;;) std::this_thread::sleep_for(std::chrono::hours(1)); // until Ctrl-C ends the program
+    const std::atomic<bool> never_stops{false}; // Ctrl-C ends the program
+    session.run(never_stops);
+    return exit_code::success;
 }
 
 } // namespace
@@ -95,6 +90,8 @@ Command add_explore_command(CLI::App& app) {
     command->add_option("--port", options->port, "Port on 127.0.0.1 to serve the page on (default 0: a free one)")
         ->check(CLI::Range(0, 65535));
     command->add_option("--threads", options->threads, "Threads for rendering; 0 = one per core")->check(CLI::Range(0, 1024));
+    command->add_flag("--no-rebuild", options->no_rebuild,
+                      "Render with this program as it is: do not rebuild it when a lab file is saved");
     command->footer("Example: whitted explore scenes/05_refraction.p3f\n"
                     "Exit code: 2 cannot serve what was given (a bad option, a missing or malformed scene file, labs not "
                     "done yet, a port in use), 3 whitted itself failed.");

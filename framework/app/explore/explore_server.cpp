@@ -69,17 +69,25 @@ ExploreServer::ExploreServer(ExploreContent content, std::string token) : impl_(
     server.Get("/", [&impl](const httplib::Request&, httplib::Response& response) {
         response.set_content(impl.content.page, "text/html; charset=utf-8");
     });
-    server.Get("/scene", [&impl](const httplib::Request&, httplib::Response& response) {
-        send_json(response, 200, impl.content.scene());
-    });
-    server.Get("/picture.png", [&impl](const httplib::Request&, httplib::Response& response) {
+    server.Get("/state", [&impl](const httplib::Request&, httplib::Response& response) {
         response.set_header("Cache-Control", "no-store");
-        response.set_content(impl.content.picture_png(), "image/png");
+        send_json(response, 200, impl.content.state());
+    });
+    server.Get("/picture.png", [&impl](const httplib::Request& request, httplib::Response& response) {
+        response.set_header("Cache-Control", "no-store");
+        response.set_content(impl.content.picture_png(request.has_param("view") ? request.get_param_value("view") : "picture"),
+                             "image/png");
     });
     server.Get("/tree", [&impl](const httplib::Request& request, httplib::Response& response) {
         const int x = int_parameter(request, "x"), y = int_parameter(request, "y");
         const int sample = request.has_param("sample") ? int_parameter(request, "sample") : 0;
         send_json(response, 200, impl.content.tree(x, y, sample));
+    });
+    server.Get("/tree.png", [&impl](const httplib::Request& request, httplib::Response& response) {
+        const int x = int_parameter(request, "x"), y = int_parameter(request, "y");
+        const int sample = request.has_param("sample") ? int_parameter(request, "sample") : 0;
+        response.set_header("Cache-Control", "no-store");
+        response.set_content(impl.content.tree_png(x, y, sample), "image/png");
     });
     // A request the content cannot answer is the page's to show; anything else thrown is a failure of whitted's,
     // told in the terminal too. The server goes on either way.

@@ -22,12 +22,13 @@ struct ExploreRequestError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// What the server serves.
+/// What the server serves. Each function may throw ExploreRequestError (the page shows its message).
 struct ExploreContent {
-    std::string page;                                               // GET /: the HTML page
-    std::function<nlohmann::json()> scene;                          // GET /scene: size, stage, samples, scene file
-    std::function<std::string()> picture_png;                       // GET /picture.png: the current picture
-    std::function<nlohmann::json(int x, int y, int sample)> tree;   // GET /tree?x=&y=&sample=: one pixel's rays
+    std::string page;                                                  // GET /: the HTML page
+    std::function<nlohmann::json()> state;                             // GET /state: what the page shows beside pictures
+    std::function<std::string(const std::string& view)> picture_png;   // GET /picture.png?view=: a picture
+    std::function<nlohmann::json(int x, int y, int sample)> tree;      // GET /tree?x=&y=&sample=: one pixel's rays
+    std::function<std::string(int x, int y, int sample)> tree_png;     // GET /tree.png?x=&y=&sample=: their picture
 };
 
 class ExploreServer {

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace whitted {
@@ -51,6 +52,9 @@ std::string png_bytes(const Image& image, Encoding encoding = Encoding::linear);
 /// Reads a .png, .jpg / .jpeg, .ppm (P6 or P3) or .pfm file. 8-bit values v become v / 255
 /// (no gamma decoding). Throws ImageError with the reason.
 Image read_image(const std::filesystem::path& path);
+
+/// Reads the bytes of a PNG file (as png_bytes gives them); `name` is for messages. Throws ImageError.
+Image read_png_bytes(std::string_view bytes, const std::string& name);
 
 /// The 8-bit value written for a linear colour component: clamped to [0, 1],
 /// optionally sRGB-encoded, then rounded.

@@ -1,0 +1,95 @@
+#include "explore/compiler_messages.hpp"
+
+#include <charconv>
+#include <optional>
+
+namespace whitted {
+namespace {
+
+// A line number or a column: 1 to 9 digits, the whole of `text`.
+std::optional<int> small_number(std::string_view text) {
+    int value = 0;
+    if (text.empty() || text.size() > 9) return std::nullopt;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return value;
+}
+
+// The text after the first of `markers` in `line`, and the text before it.
+std::optional<std::pair<std::string_view, std::string_view>> split_at(std::string_view line,
+                                                                     std::initializer_list<std::string_view> markers) {
+    for (std::string_view marker : markers)
+        if (const std::size_t at = line.find(marker); at != std::string_view::npos)
+            return std::pair{line.substr(0, at), line.substr(at + marker.size())};
+    return std::nullopt;
+}
+
+// GCC and Clang: "file:line:column: error: message" (column optional; file may hold ':', as in C:\...).
+std::optional<CompilerError> gnu_error(std::string_view line) {
+    const auto parts = split_at(line, {": fatal error: ", ": error: "});
+    if (!parts) return std::nullopt;
+    std::string_view place = parts->first;
+    CompilerError error;
+    std::size_t colon = place.rfind(':');
+    if (colon == std::string_view::npos) return std::nullopt;
+    std::optional<int> last = small_number(place.substr(colon + 1));
+    if (!last) return std::nullopt;
+    place = place.substr(0, colon);
+    colon = place.rfind(':');
+    std::optional<int> before = colon == std::string_view::npos ? std::nullopt : small_number(place.substr(colon + 1));
+    if (before) { // file:line:column
+        error.line = *before;
+        error.column = *last;
+        place = place.substr(0, colon);
+    } else { // file:line
+        error.line = *last;
+    }
+    if (place.empty()) return std::nullopt;
+    error.file = place;
+    error.message = parts->second;
+    return error;
+}
+
+// MSVC: "file(line,column): error C2143: message" (column optional).
+std::optional<CompilerError> msvc_error(std::string_view line) {
+    const auto parts = split_at(line, {"): fatal error ", "): error "});
+    if (!parts) return std::nullopt;
+    const std::string_view place = parts->first;
+    const std::size_t open = place.rfind('(');
+    if (open == std::string_view::npos || open == 0) return std::nullopt;
+    std::string_view numbers = place.substr(open + 1);
+    CompilerError error;
+    const std::size_t comma = numbers.find(',');
+    const std::optional<int> line_number = small_number(numbers.substr(0, comma));
+    const std::optional<int> column = comma == std::string_view::npos ? std::optional(0) : small_number(numbers.substr(comma + 1));
+    if (!line_number || !column) return std::nullopt;
+    error.line = *line_number;
+    error.column = *column;
+    std::string_view file = place.substr(0, open);
+    while (!file.empty() && file.front() == ' ') file.remove_prefix(1); // MSBuild indents
+    error.file = file;
+    std::string_view message = parts->second; // "C2143: syntax error: ..."
+    if (const std::size_t code = message.find(": "); code != std::string_view::npos && message.front() == 'C')
+        message.remove_prefix(code + 2);
+    error.message = message;
+    return error;
+}
+
+} // namespace
+
+std::vector<CompilerError> compiler_errors(std::string_view output, std::size_t limit) {
+    std::vector<CompilerError> errors;
+    std::size_t start = 0;
+    while (start < output.size() && errors.size() < limit) {
+        std::size_t end = output.find('\n', start);
+        if (end == std::string_view::npos) end = output.size();
+        std::string_view line = output.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        start = end + 1;
+        if (std::optional<CompilerError> error = gnu_error(line)) errors.push_back(std::move(*error));
+        else if (std::optional<CompilerError> msvc = msvc_error(line)) errors.push_back(std::move(*msvc));
+    }
+    return errors;
+}
+
+} // namespace whitted

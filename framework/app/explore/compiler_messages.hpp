@@ -1,0 +1,25 @@
+// The errors in a compiler's output, each with its file and line, for the page to show when a lab does not
+// compile.
+//
+// Why: the build's output is long (the build tool's progress, notes, the lines of code quoted); the student
+// needs the first error and where it is. GCC and Clang write "file:line:column: error: message", MSVC
+// "file(line,column): error C1234: message"; both are read, and anything else is left to the full output.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace whitted {
+
+struct CompilerError {
+    std::string file;   // as the compiler wrote it
+    int line = 0;
+    int column = 0;     // 0: not given
+    std::string message;
+};
+
+/// The errors of `output` in order, at most `limit` of them.
+std::vector<CompilerError> compiler_errors(std::string_view output, std::size_t limit = 20);
+
+} // namespace whitted
