@@ -4,6 +4,7 @@
 #   make handout OUT=dir, make proofs, make references: for instructors
 #   make test-grader  end-to-end check of `whitted grade` (CI, after make test)
 #   make test-report  the grader's report.html opened in headless Chromium (CI)
+#   make test-explore `whitted explore` in headless Chromium: a click, a pass, a broken and a mended lab (CI)
 #   make bench    time whitted against POV-Ray and Embree (instructor/docs/instructors.md, "Benchmark")
 #   make sanitize every test built with AddressSanitizer + UBSan (instructor/docs/robustness.md)
 #   make fuzz     fuzz the loaders and the image reader, MINUTES each (instructor/docs/robustness.md)
@@ -38,7 +39,7 @@ BUDGET ?= 600
 MODE := $(shell sed -n 's/^set(WHITTED_DEFAULT_MODE \([a-z]*\))$$/\1/p' cmake/WhittedMode.cmake)
 INSTRUCTOR := $(filter instructor,$(MODE))
 
-.PHONY: all deps configure build render test bench sanitize fuzz test-grader test-report test-hostile references handout proofs gradescope test-gradescope clean
+.PHONY: all deps configure build render test bench sanitize fuzz test-grader test-report test-explore test-hostile references handout proofs gradescope test-gradescope clean
 
 all: build
 
@@ -100,6 +101,10 @@ test-report: DEPS_ARGS = --browser
 test-report: build
 	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash instructor/scripts/test-report-browser.sh
 
+test-explore: DEPS_ARGS = --browser
+test-explore: deps
+	@bash instructor/scripts/test-explore-browser.sh
+
 test-hostile: build
 	@JOBS=$(JOBS) BUILD_DIR=$(BUILD_DIR) bash instructor/scripts/test-hostile.sh
 
@@ -133,7 +138,7 @@ proofs:
 	@bash instructor/scripts/prove-tests.sh
 else
 # The student handout has no reference solution: these are the instructor's.
-test-grader test-report test-hostile fuzz references handout proofs bench gradescope test-gradescope:
+test-grader test-report test-explore test-hostile fuzz references handout proofs bench gradescope test-gradescope:
 	@echo "make $@ is for instructors: it needs the instructor's tree (solution/ and instructor/)"; exit 2
 endif
 

@@ -3,7 +3,8 @@
 #   1. export it; `make test` fails and names the unfinished stubs;
 #   2. `make render` explains that lab 1 is missing;
 #   3. with labs 1-3 done, `make render` renders stage 3 and says which labs are missing;
-#   4. with every lab done (the reference files copied in), `make test` passes.
+#   4. with every lab done (the reference files copied in), `make test` passes;
+#   5. `whitted explore` works in headless Chromium, with its live rebuild (test-explore-browser.sh, on this build).
 # The GitHub Classroom workflow's graded steps give 0 points after 1 and every public point after 4
 # (instructor/scripts/test-classroom.sh runs the workflow's build step too, and times it).
 set -euo pipefail
@@ -68,4 +69,7 @@ not_ok=$(grep -E "tests pass" "$work/test2.log" | grep -v "^ok " || true)
 python3 "$root/instructor/scripts/lib/classroom_steps.py" grade . all > "$work/classroom2.log" 2>&1 ||
     { cat "$work/classroom2.log"; fail "the classroom workflow's graded steps did not all pass once every lab is done"; }
 tail -1 "$work/classroom2.log"
+
+echo "test-handout: 5. whitted explore in a browser: a click on the glass, a pass, the goal, a save that breaks a lab, one that mends it"
+bash "$root/instructor/scripts/test-explore-browser.sh" "$handout"
 echo "test-handout: passed"

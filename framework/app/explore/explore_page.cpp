@@ -19,7 +19,10 @@ h1 { font-size: 1.3em; margin: 0 0 .3em; } h2 { font-size: 1.1em; margin: .2em 0
 #views button { margin: 0 .2em .3em 0; } button.on { background: #557; color: #fff; }
 #tree ul { list-style: none; padding-left: 1.2em; border-left: 1px dotted #666; margin: 0; }
 #tree > ul { padding-left: 0; border: 0; } #tree li { margin: .25em 0; }
-#side { flex: 1 1 28em; max-width: 50em; } #rays { max-width: 100%; border: 1px solid #555; display: block; margin-top: .5em; }
+#side { flex: 1 1 28em; max-width: 50em; } #tree { max-height: 78vh; overflow: auto; }
+#rays { max-width: 100%; border: 1px solid #555; display: block; margin-top: .5em; }
+#frame { position: relative; display: inline-block; }
+#marker { position: absolute; border: 2px solid #f0f; border-radius: 50%; pointer-events: none; }
 .kind { font-weight: bold; } .eye { color: #fff; } .reflected { color: #4dd; } .refracted { color: #5d5; }
 .shadow { color: #dd5; } .blocked { color: #e55; } .bad { color: #f66; font-weight: bold; } .good { color: #6d6; }
 .error { color: #f88; white-space: pre-wrap; font-family: monospace; } .muted { color: #999; }
@@ -34,11 +37,12 @@ table { border-collapse: collapse; } td { padding: 0 .6em 0 0; }
 <div id="layout">
   <div id="main">
     <div id="views"></div>
-    <img id="picture" alt="the picture">
+    <div id="frame"><img id="picture" alt="the picture"><div id="marker" hidden></div></div>
     <p id="caption" class="muted">Click a pixel to see its rays.</p>
     <div id="numbers"></div>
+    <img id="rays" alt="" hidden>
   </div>
-  <div id="side"><div id="pixel"></div><div id="tree"></div><img id="rays" alt="" hidden></div>
+  <div id="side"><div id="pixel"></div><div id="tree"></div></div>
 </div>
 )PAGE";
     static const char* const script = R"PAGE(<script>
@@ -48,6 +52,8 @@ const api = (path, query = {}) => path + "?" + new URLSearchParams({ ...query, t
 const $ = (id) => document.getElementById(id);
 const legends = { picture: "your labs' picture", goal: "the goal: the lab's picture in the handout",
   difference: "each pixel's largest error against the goal: black 0, dark blue up to 4/255 (within the tolerance), green 5, yellow 16, red 64, white 255; magenta NaN" };
+const fates = { below_min_weight: "not traced: its weight from the eye is below the minimum weight (1/1024)",
+  over_budget: "not traced: the pixel's budget of rays is used up" };
 let state = null, view = "picture", shownVersion = -1, shownView = "", loading = false, zoom = 1, pixel = null;
 
 function el(tag, content, cls) { const e = document.createElement(tag); if (content !== undefined) e.textContent = content; if (cls) e.className = cls; return e; }
@@ -85,8 +91,9 @@ function showProblems() {
 
 function showStatus() {
   const parts = [];
-  if (state.activity === "building") parts.push("building: " + state.note);
-  else if (state.activity === "rendering") parts.push("rendering " + state.note + "…");
+  const since = " (" + Math.floor(state.activity_seconds) + " s)";
+  if (state.activity === "building") parts.push("building: " + state.note + since);
+  else if (state.activity === "rendering") parts.push("rendering " + state.note + "…" + since);
   else if (state.note) parts.push(state.note);
   if (state.stage) parts.push("stage " + state.stage + (state.preview ? ", a quarter-size preview" : "") + (state.render && state.render.seconds ? ", rendered in " + state.render.seconds.toFixed(2) + " s" : ""));
   if (state.goal && state.stage && state.stage !== state.goal.stage) parts.push("the goal is stage " + state.goal.stage);
@@ -130,6 +137,7 @@ async function showPicture() {
     img.width = state.width * zoom; img.height = state.height * zoom;
     $("caption").textContent = (legends[wanted] || "the " + wanted + " pass") + ". Click a pixel to see its rays.";
     img.dataset.shown = wanted + " " + version;
+    showMarker();
     shownVersion = version; shownView = wanted;
   } catch (error) { $("caption").replaceChildren(el("span", error.message, "error")); shownView = wanted; shownVersion = version; }
   loading = false;
@@ -147,13 +155,25 @@ function rayItem(ray) {
   if (ray.local) li.append(el("div", "local colour " + vec(ray.local)));
   if (ray.color) li.append(el("div", "colour " + vec(ray.color) + (ray.path_weight ? ", adds " + vec(ray.color.map((c, i) => c * ray.path_weight[i])) + " to the pixel" : "")));
   if (ray.check) li.append(el("div", ray.check.law + (ray.check.agrees ? " holds" : " is off by " + num(ray.check.off_degrees) + "°"), ray.check.agrees ? "good" : "bad"));
-  if (ray.fate && ray.fate !== "traced") li.append(el("div", ray.fate, "muted"));
+  if (ray.fate && ray.fate !== "traced") li.append(el("div", fates[ray.fate] || ray.fate, "muted"));
   if (ray.children && ray.children.length) { const ul = el("ul"); ray.children.forEach((c) => ul.append(rayItem(c))); li.append(ul); }
   return li;
 }
 
+// Rings the pixel shown on the picture.
+function showMarker() {
+  const img = $("picture"), marker = $("marker");
+  if (!pixel || !state || !state.width) { marker.hidden = true; return; }
+  const scale = img.clientWidth / state.width, size = Math.max(10, 3 * scale);
+  marker.style.left = img.offsetLeft + img.clientLeft + (pixel.x + 0.5) * scale - size / 2 - 2 + "px";
+  marker.style.top = img.offsetTop + img.clientTop + (pixel.y + 0.5) * scale - size / 2 - 2 + "px";
+  marker.style.width = marker.style.height = size + "px";
+  marker.hidden = false;
+}
+
 async function showTree(x, y, sample) {
   pixel = { x, y, sample };
+  showMarker();
   $("tree").replaceChildren(el("p", "tracing pixel (" + x + ", " + y + ")…", "muted"));
   $("rays").hidden = true;
   try {
@@ -177,10 +197,12 @@ async function showTree(x, y, sample) {
   } catch (error) { $("tree").replaceChildren(el("p", error.message, "error")); $("tree").dataset.pixel = "error"; }
 }
 
+// The pixel under the mouse: inside the picture's border, scaled from the picture as shown to its pixels.
 $("picture").addEventListener("click", (event) => {
   if (!state || !state.width) return;
-  const r = event.target.getBoundingClientRect();
-  const x = Math.floor((event.clientX - r.left) / r.width * state.width), y = Math.floor((event.clientY - r.top) / r.height * state.height);
+  const img = event.target, r = img.getBoundingClientRect();
+  const x = Math.floor((event.clientX - r.left - img.clientLeft) / img.clientWidth * state.width);
+  const y = Math.floor((event.clientY - r.top - img.clientTop) / img.clientHeight * state.height);
   showTree(Math.min(Math.max(x, 0), state.width - 1), Math.min(Math.max(y, 0), state.height - 1), 0);
 });
 

@@ -113,6 +113,7 @@ void ExploreSession::set_activity(const std::string& activity, const std::string
     const std::lock_guard lock(mutex_);
     activity_ = activity;
     activity_note_ = note;
+    activity_start_ = std::chrono::steady_clock::now();
 }
 
 void ExploreSession::update(const std::string& why, const KeepGoing& keep_going) {
@@ -237,7 +238,8 @@ nlohmann::json ExploreSession::state() const {
     for (const PassInfo& pass : all_passes()) passes.push_back(pass.name);
     const std::lock_guard lock(mutex_);
     nlohmann::json state = {{"scene", settings_.scene}, {"width", width_}, {"height", height_},
-                            {"activity", activity_}, {"note", activity_note_}, {"scene_error", scene_error_},
+                            {"activity", activity_}, {"note", activity_note_},
+                            {"activity_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - activity_start_).count()}, {"scene_error", scene_error_},
                             {"build", build_}, {"render", render_}, {"version", version_}, {"preview", preview_},
                             {"stage", stage_}, {"difference", difference_}, {"passes", passes}, {"live", nullptr},
                             {"goal", nullptr}};

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -63,6 +64,7 @@ class ExploreSession {
 
     mutable std::mutex mutex_; // guards everything below
     std::string activity_ = "starting", activity_note_;
+    std::chrono::steady_clock::time_point activity_start_ = std::chrono::steady_clock::now();
     int width_ = 0, height_ = 0;       // the scene's picture size
     std::string scene_error_;          // the scene does not load: file:line: why
     nlohmann::json build_;             // the last build: state, errors, output, seconds (null: not live)

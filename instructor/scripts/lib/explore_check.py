@@ -9,6 +9,7 @@
     explore_check.py screenshot CHROMIUM WHITTED SCENE X Y OUT
         A picture of the page for SCENE with pixel (X, Y)'s tree open (docs/labs/debugging.md)."""
 import json
+import math
 import os
 import re
 import subprocess
@@ -53,8 +54,15 @@ def wait_for_picture(browser, view="picture", after=0, timeout=120):
 
 
 def click_pixel(browser, x, y, width, height):
-    left, top, w, h = browser.evaluate(f"(() => {{ const r = {PICTURE}.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; }})()")
-    browser.click(left + (x + 0.5) * w / width, top + (y + 0.5) * h / height)
+    # Inside the picture's border, as a student's click lands.
+    left, top, w, h = browser.evaluate(f"(() => {{ const p = {PICTURE}, r = p.getBoundingClientRect();"
+                                       " return [r.left + p.clientLeft, r.top + p.clientTop, p.clientWidth, p.clientHeight]; })()")
+    # Chromium gives the page a click's coordinates as whole numbers (truncated): click at the first whole
+    # coordinate inside the pixel, as a student's mouse would land.
+    def inside(start, index, size, count):
+        low = start + index * size / count
+        return math.ceil(low) + 0.25
+    browser.click(inside(left, x, w, width), inside(top, y, h, height))
 
 
 DOM_TREE = """(() => {
@@ -179,7 +187,7 @@ def check(chromium, handout, work):
 def screenshot(chromium, whitted, scene, x, y, out, work):
     log = open(os.path.join(work, "explore.log"), "w")
     process, url = start_explore(whitted, scene, os.getcwd(), log)
-    browser = Browser(chromium, os.path.join(work, "profile"), width=1500, height=1040)
+    browser = Browser(chromium, os.path.join(work, "profile"), width=1500, height=1250)
     try:
         browser.open(url)
         wait_for_picture(browser)
