@@ -8,15 +8,29 @@
 #     shares with the library differ; the package's own description (cpp-httplib.pc, read here
 #     as a file, no pkg-config needed) names the switches, and its dependencies bring their headers.
 #
+#   - upstream's header-only httplib.h in the folder httplib_INCLUDE_DIR, with WHITTED_HTTPLIB_HEADER_ONLY
+#     on: compiled with the program, no library (instructor/scripts/test-platforms.sh, for the
+#     cross-builds, which cannot link Debian's library).
+#
 # Defines httplib_FOUND and httplib::httplib. Not finding it is no error: `whitted explore` then says
 # what to install.
-find_package(httplib CONFIG QUIET)
+option(WHITTED_HTTPLIB_HEADER_ONLY "httplib_INCLUDE_DIR holds upstream's header-only httplib.h: link no library" OFF)
+if(WHITTED_HTTPLIB_HEADER_ONLY)
+  if(NOT EXISTS "${httplib_INCLUDE_DIR}/httplib.h")
+    message(FATAL_ERROR "WHITTED_HTTPLIB_HEADER_ONLY: no httplib.h in httplib_INCLUDE_DIR ('${httplib_INCLUDE_DIR}')")
+  endif()
+  set(httplib_LIBRARY "" CACHE FILEPATH "" FORCE)
+else()
+  find_package(httplib CONFIG QUIET)
+endif()
 if(TARGET httplib::httplib)
   set(httplib_FOUND TRUE)
   return()
 endif()
 find_path(httplib_INCLUDE_DIR NAMES httplib.h DOC "The folder with cpp-httplib's httplib.h")
-find_library(httplib_LIBRARY NAMES cpp-httplib DOC "Debian's compiled cpp-httplib (libcpp-httplib-dev)")
+if(NOT WHITTED_HTTPLIB_HEADER_ONLY)
+  find_library(httplib_LIBRARY NAMES cpp-httplib DOC "Debian's compiled cpp-httplib (libcpp-httplib-dev)")
+endif()
 set(httplib_DEFINITIONS "")
 if(httplib_LIBRARY)
   get_filename_component(httplib_library_dir "${httplib_LIBRARY}" DIRECTORY)

@@ -27,7 +27,7 @@ case "${1:-}" in
     --fuzz) optional=(clang libclang-rt-14-dev) ;;
     --browser) optional=(chromium) ;;
     --proofs) packages+=(patch) ;;
-    --ci) packages+=(python3 python3-yaml patch qemu-user clang libc++-14-dev libc++abi-14-dev googletest g++-aarch64-linux-gnu g++-mingw-w64-x86-64 wine64)
+    --ci) packages+=(python3 python3-yaml patch curl xz-utils qemu-user clang libc++-14-dev libc++abi-14-dev googletest g++-aarch64-linux-gnu g++-mingw-w64-x86-64 wine64)
           optional=(bubblewrap chromium libclang-rt-14-dev) ;;
     *) echo "usage: scripts/install-deps.sh [--bench|--sandbox|--fuzz|--browser|--proofs|--ci]" >&2; exit 2 ;;
 esac

@@ -17,7 +17,8 @@
 # run its programs), and its lines in check_tools below. GoogleTest is built for each
 # target from Debian's sources (/usr/src/googletest), once: PLATFORMS_BUILD_DIR/TARGET
 # (build-platforms/ by default). The header-only libraries (GLM, CLI11, nlohmann-json,
-# stb) are Debian's, seen by a cross target through a folder of their own (headers_prefix).
+# stb) are Debian's, seen by a cross target through a folder of their own (headers_prefix), with
+# upstream's header-only cpp-httplib (httplib_header).
 # JOBS compile jobs (2 by default).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -80,6 +81,30 @@ headers_prefix() {
     for package in glm CLI nlohmann stb; do ln -s "/usr/include/$package" "$prefix/include/$package"; done
     # The packages' CMake files find their headers relative to themselves: copies, not links.
     for package in glm CLI11 nlohmann_json; do cp -r "/usr/share/cmake/$package" "$prefix/share/cmake/"; done
+    httplib_header "$prefix/include"
+}
+
+# cpp-httplib for `whitted explore`'s server: Debian's package is a library compiled for this machine, which no
+# target can link, so the targets compile upstream's header-only httplib.h, from the source Debian packages (the
+# same version, 0.11.4), fetched once into $cache and checked against its SHA-256. Without it (no network), the
+# targets build without cpp-httplib, and this says so: `whitted explore` then only says what to install.
+httplib_options=(-DCMAKE_DISABLE_FIND_PACKAGE_httplib=ON)
+httplib_header() {
+    local include=$1 archive=$cache/downloads/cpp-httplib_0.11.4+ds.orig.tar.xz
+    local url=http://deb.debian.org/debian/pool/main/c/cpp-httplib/cpp-httplib_0.11.4+ds.orig.tar.xz
+    local sha256=8b1a5df569003b6a4f24c68489bbda5c64aec94697bdc9ebba5d79408b2ae7eb
+    mkdir -p "$cache/downloads"
+    if ! echo "$sha256  $archive" | sha256sum -c --quiet 2> /dev/null; then
+        rm -f "$archive"
+        if ! curl -fsS --max-time 60 -o "$archive.part" "$url" || ! echo "$sha256  $archive.part" | sha256sum -c --quiet; then
+            rm -f "$archive.part"
+            echo "test-platforms: NOTE cannot fetch $url: the targets build without cpp-httplib (whitted explore's server unproven)"
+            return 0
+        fi
+        mv "$archive.part" "$archive"
+    fi
+    tar -xJf "$archive" -O --wildcards '*/httplib.h' > "$include/httplib.h"
+    httplib_options=(-DWHITTED_HTTPLIB_HEADER_ONLY=ON "-Dhttplib_INCLUDE_DIR=$include")
 }
 
 # Wine's own Windows folder, made once (its first start takes seconds), and a Wine server kept
@@ -219,7 +244,8 @@ for target in "${targets[@]}"; do
     [ ! -d "$root/../shared" ] || ln -s "$root/../shared" "$home/shared"
     quiet "$work/$target-configure.log" cmake -S "$handout" -B "$build" \
         --toolchain "$root/instructor/scripts/platforms/$target.cmake" \
-        -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix;$cache/headers" -DCMAKE_FIND_ROOT_PATH="$prefix;$cache/headers"
+        -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix;$cache/headers" -DCMAKE_FIND_ROOT_PATH="$prefix;$cache/headers" \
+        "${httplib_options[@]}"
     # How to run the target's programs: directly, or through its emulator (qemu-user, wine).
     emulator=$(sed -n 's/^CMAKE_CROSSCOMPILING_EMULATOR:[A-Z]*=//p' "$build/CMakeCache.txt" | tr ';' ' ')
     read -r -a run <<< "$emulator"

@@ -118,7 +118,7 @@ void ExploreSession::set_activity(const std::string& activity, const std::string
 
 void ExploreSession::update(const std::string& why, const KeepGoing& keep_going) {
     if (!load_scene_facts()) return;
-    if (settings_.live && !build_worker(why, keep_going)) return;
+    if (settings_.live && !build_worker(why)) return;
     render_picture(keep_going);
 }
 
@@ -146,12 +146,13 @@ bool ExploreSession::load_scene_facts() {
 }
 
 // Rebuilds the worker; false (and the compiler's errors on the page) when it does not build.
-bool ExploreSession::build_worker(const std::string& why, const KeepGoing& keep_going) {
+bool ExploreSession::build_worker(const std::string& why) {
     set_activity("building", why + ": rebuilding " + settings_.live->worker_target);
     WorkerRun run;
     {
         const std::unique_lock exclusive(worker_in_use_); // no render runs the program while it is rewritten
-        run = worker_.build(*settings_.live, keep_going);
+        // Never stopped half-way (stopping cmake would leave its compilers running): a save meanwhile builds again.
+        run = worker_.build(*settings_.live, [] { return true; });
     }
     nlohmann::json errors = nlohmann::json::array();
     for (const CompilerError& error : compiler_errors(run.output))

@@ -54,7 +54,7 @@ class ExploreSession {
     struct Snapshot; // the lab files' and the scene's times and sizes
     void update(const std::string& why, const KeepGoing& keep_going);
     bool load_scene_facts();
-    bool build_worker(const std::string& why, const KeepGoing& keep_going);
+    bool build_worker(const std::string& why);
     void render_picture(const KeepGoing& keep_going);
     void set_activity(const std::string& activity, const std::string& note);
 

@@ -5,6 +5,5 @@ set(CMAKE_CXX_COMPILER clang++)
 # CMake passes CMAKE_CXX_FLAGS to C++ links too: the programs link libc++.
 set(CMAKE_CXX_FLAGS_INIT "-stdlib=libc++")
 # Debian's cpp-httplib is a library compiled against GCC's standard library, which a libc++ program cannot
-# link: the libcxx build goes without it, and its `whitted explore` says what to install (on a Mac, vcpkg's
-# cpp-httplib is headers only, compiled with the program).
-set(CMAKE_DISABLE_FIND_PACKAGE_httplib ON)
+# link: test-platforms.sh gives upstream's header-only httplib.h instead (WHITTED_HTTPLIB_HEADER_ONLY), as
+# vcpkg's cpp-httplib does on a Mac.
