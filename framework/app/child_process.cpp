@@ -4,6 +4,10 @@
 #include <utility>
 
 #ifdef _WIN32
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <system_error>
 #include <windows.h>
 #else
 #include <cerrno>
@@ -21,7 +25,155 @@ extern char** environ;
 
 namespace whitted {
 
-#ifndef _WIN32
+#ifdef _WIN32
+
+struct ChildProcess::Handle {
+    HANDLE process = nullptr;
+    ~Handle() { CloseHandle(process); }
+};
+
+namespace {
+
+// The exit code a stopped child gets from TerminateProcess (its reason says "stopped" in any case).
+constexpr UINT stopped_exit_code = EXIT_FAILURE;
+
+// UTF-8 text as the UTF-16 of the Windows calls whose names end in W.
+std::wstring utf16(const std::string& text) {
+    if (text.empty()) return {};
+    const int length = MultiByteToWideChar(CP_UTF8, 0, text.data(), static_cast<int>(text.size()), nullptr, 0);
+    std::wstring result(length, L'\0');
+    MultiByteToWideChar(CP_UTF8, 0, text.data(), static_cast<int>(text.size()), result.data(), length);
+    return result;
+}
+
+// Appends one argument to a command line as the Microsoft C runtime reads it back: in quotes if it has a space, a
+// tab or a quote (or is empty), a quote escaped by a backslash, backslashes doubled only before a quote.
+void append_argument(std::wstring& line, const std::wstring& argument) {
+    if (!line.empty()) line += L' ';
+    if (!argument.empty() && argument.find_first_of(L" \t\n\v\"") == std::wstring::npos) {
+        line += argument;
+        return;
+    }
+    line += L'"';
+    std::size_t backslashes = 0;
+    for (const wchar_t letter : argument) {
+        if (letter == L'\\') {
+            ++backslashes;
+            continue;
+        }
+        line.append(letter == L'"' ? 2 * backslashes + 1 : backslashes, L'\\');
+        line += letter;
+        backslashes = 0;
+    }
+    line.append(2 * backslashes, L'\\'); // before the closing quote
+    line += L'"';
+}
+
+// A handle the child inherits (only the ones of PROC_THREAD_ATTRIBUTE_HANDLE_LIST below), closed on leaving scope.
+struct InheritedFile {
+    HANDLE handle;
+    InheritedFile(const std::filesystem::path& path, DWORD access, DWORD creation) {
+        SECURITY_ATTRIBUTES inheritable{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
+        handle = CreateFileW(path.c_str(), access, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, &inheritable,
+                             creation, FILE_ATTRIBUTE_NORMAL, nullptr);
+    }
+    ~InheritedFile() {
+        if (handle != INVALID_HANDLE_VALUE) CloseHandle(handle);
+    }
+    InheritedFile(const InheritedFile&) = delete;
+    InheritedFile& operator=(const InheritedFile&) = delete;
+};
+
+// The system's sentence for the last error of a Windows call.
+std::string last_error() {
+    return std::error_code(static_cast<int>(GetLastError()), std::system_category()).message();
+}
+
+// How a process ended, from its exit code: one of NTSTATUS's error codes is the exception that ended it.
+ChildExit exit_of(DWORD code) {
+    ChildExit result{static_cast<int>(code), false, "exit code " + std::to_string(code)};
+    if (code < ERROR_SEVERITY_ERROR) return result;
+    result.crashed = true;
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "0x%08lX", static_cast<unsigned long>(code));
+    const char* name = code == EXCEPTION_ACCESS_VIOLATION      ? "access violation"
+                       : code == EXCEPTION_STACK_OVERFLOW      ? "stack overflow"
+                       : code == EXCEPTION_ILLEGAL_INSTRUCTION ? "illegal instruction"
+                       : code == EXCEPTION_INT_DIVIDE_BY_ZERO  ? "integer divide by zero"
+                                                               : nullptr;
+    result.reason = name ? "crashed: " + std::string(name) + " (exception " + hex + ")"
+                         : "crashed: exception " + std::string(hex);
+    return result;
+}
+
+} // namespace
+
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& output) {
+    if (argv.empty()) throw ChildStartError("no program to run");
+    const std::wstring program = utf16(argv[0]);
+    std::wstring command_line;
+    for (const std::string& argument : argv) append_argument(command_line, utf16(argument));
+    const InheritedFile out(output, GENERIC_WRITE, CREATE_ALWAYS);
+    if (out.handle == INVALID_HANDLE_VALUE) throw ChildStartError("cannot write " + output.string() + ": " + last_error());
+    const InheritedFile input(L"NUL", GENERIC_READ, OPEN_EXISTING); // always there
+    // Only these two handles are inherited, not those another thread is giving its own child at the same time.
+    HANDLE inherited[] = {input.handle, out.handle};
+    SIZE_T size = 0;
+    InitializeProcThreadAttributeList(nullptr, 1, 0, &size);
+    std::vector<char> attributes(size);
+    STARTUPINFOEXW startup{};
+    startup.StartupInfo.cb = sizeof startup;
+    startup.StartupInfo.dwFlags = STARTF_USESTDHANDLES;
+    startup.StartupInfo.hStdInput = input.handle;
+    startup.StartupInfo.hStdOutput = out.handle;
+    startup.StartupInfo.hStdError = out.handle;
+    startup.lpAttributeList = reinterpret_cast<LPPROC_THREAD_ATTRIBUTE_LIST>(attributes.data());
+    if (!InitializeProcThreadAttributeList(startup.lpAttributeList, 1, 0, &size))
+        throw ChildStartError("cannot run " + argv[0] + ": " + last_error());
+    const bool listed = UpdateProcThreadAttribute(startup.lpAttributeList, 0, PROC_THREAD_ATTRIBUTE_HANDLE_LIST,
+                                                  inherited, sizeof inherited, nullptr, nullptr);
+    PROCESS_INFORMATION started{};
+    const bool ok = listed && CreateProcessW(program.c_str(), command_line.data(), nullptr, nullptr, TRUE,
+                                             EXTENDED_STARTUPINFO_PRESENT, nullptr, nullptr, &startup.StartupInfo, &started);
+    const std::string error = ok ? "" : last_error();
+    DeleteProcThreadAttributeList(startup.lpAttributeList);
+    if (!ok) throw ChildStartError("cannot run " + argv[0] + ": " + error);
+    CloseHandle(started.hThread);
+    handle_ = new Handle{started.hProcess};
+}
+
+std::optional<ChildExit> ChildProcess::wait_for(std::chrono::milliseconds timeout) {
+    if (exit_ || !handle_) return exit_;
+    const auto milliseconds = std::clamp<std::chrono::milliseconds::rep>(timeout.count(), 0, INFINITE - 1);
+    const DWORD waited = WaitForSingleObject(handle_->process, static_cast<DWORD>(milliseconds));
+    if (waited == WAIT_TIMEOUT) return std::nullopt;
+    DWORD code = 0;
+    if (waited != WAIT_OBJECT_0 || !GetExitCodeProcess(handle_->process, &code)) { // nothing to wait for
+        exit_ = ChildExit{-1, false, "lost"};
+        return exit_;
+    }
+    exit_ = exit_of(code);
+    if (stopped_) exit_->reason = "stopped";
+    return exit_;
+}
+
+void ChildProcess::stop() {
+    if (exit_ || !handle_) return;
+    stopped_ = true;
+    TerminateProcess(handle_->process, stopped_exit_code);
+}
+
+std::filesystem::path own_executable() {
+    std::wstring path(MAX_PATH, L'\0');
+    for (;;) { // a longer path than the buffer is cut short: a buffer twice as large, until it fits
+        const DWORD length = GetModuleFileNameW(nullptr, path.data(), static_cast<DWORD>(path.size()));
+        if (length == 0) return {};
+        if (length < path.size()) return path.substr(0, length);
+        path.resize(2 * path.size());
+    }
+}
+
+#else // POSIX
 
 struct ChildProcess::Handle {
     pid_t pid = -1;
@@ -48,17 +200,23 @@ ChildExit exit_of(int status) {
 
 ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& output) {
     if (argv.empty()) throw ChildStartError("no program to run");
+    // Checked here, as posix_spawn cannot always tell: under qemu-user the child's failed exec is only its exit code 127.
+    if (access(argv[0].c_str(), X_OK) != 0) throw ChildStartError("cannot run " + argv[0] + ": " + std::strerror(errno));
     std::vector<char*> args;
     for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
     args.push_back(nullptr);
+    // The output opened here for the same reason; close-on-exec, so that no other child inherits it.
+    const int out = open(output.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (out < 0) throw ChildStartError("cannot write " + output.string() + ": " + std::strerror(errno));
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 1, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    posix_spawn_file_actions_adddup2(&actions, out, 1);
+    posix_spawn_file_actions_adddup2(&actions, out, 2);
     pid_t pid = -1;
     const int error = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
+    close(out);
     if (error != 0) throw ChildStartError("cannot run " + argv[0] + ": " + std::strerror(error));
     handle_ = new Handle{pid};
 }
