@@ -173,6 +173,23 @@ std::filesystem::path own_executable() {
     }
 }
 
+bool running_programs_are_locked() { return true; }
+
+void start_detached(const std::vector<std::string>& argv) {
+    if (argv.empty()) throw ChildStartError("no program to run");
+    std::wstring command_line;
+    for (const std::string& argument : argv) append_argument(command_line, utf16(argument));
+    STARTUPINFOW startup{};
+    startup.cb = sizeof startup;
+    PROCESS_INFORMATION started{};
+    // No handles inherited: a console program started so shares this console, its input and its output.
+    if (!CreateProcessW(utf16(argv[0]).c_str(), command_line.data(), nullptr, nullptr, FALSE, 0, nullptr, nullptr,
+                        &startup, &started))
+        throw ChildStartError("cannot run " + argv[0] + ": " + last_error());
+    CloseHandle(started.hThread);
+    CloseHandle(started.hProcess);
+}
+
 #else // POSIX
 
 struct ChildProcess::Handle {
@@ -257,6 +274,19 @@ std::filesystem::path own_executable() {
     std::error_code error;
     return std::filesystem::read_symlink("/proc/self/exe", error);
 #endif
+}
+
+bool running_programs_are_locked() { return false; }
+
+void start_detached(const std::vector<std::string>& argv) {
+    if (argv.empty()) throw ChildStartError("no program to run");
+    if (access(argv[0].c_str(), X_OK) != 0) throw ChildStartError("cannot run " + argv[0] + ": " + std::strerror(errno));
+    std::vector<char*> args;
+    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
+    args.push_back(nullptr);
+    pid_t pid = -1;
+    if (const int error = posix_spawn(&pid, args[0], nullptr, nullptr, args.data(), environ); error != 0)
+        throw ChildStartError("cannot run " + argv[0] + ": " + std::strerror(error));
 }
 
 #endif // POSIX

@@ -62,4 +62,12 @@ ChildExit run_child(const std::vector<std::string>& argv, const std::filesystem:
 /// The path of the running program's own executable file.
 std::filesystem::path own_executable();
 
+/// True where the file of a running program cannot be rewritten (Windows): a build must not relink a program
+/// that is running.
+bool running_programs_are_locked();
+
+/// Starts argv in this console (its output where ours goes) and leaves it running after this program ends.
+/// Throws ChildStartError.
+void start_detached(const std::vector<std::string>& argv);
+
 } // namespace whitted

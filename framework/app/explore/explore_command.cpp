@@ -25,6 +25,7 @@ struct ExploreOptions {
     int port = 0;
     int threads = 0;
     bool no_rebuild = false;
+    bool from_copy = false; // this program is the copy that serves (Windows: serve_from_copy)
 };
 
 // A folder of its own for the worker's files, removed at the end.
@@ -40,6 +41,26 @@ struct ScratchFolder {
     }
 };
 
+// Windows cannot rewrite the file of a running program: while the page is served, the student's own build of
+// `whitted` (make test, a lab's preset) would fail to link it. There a copy of whitted serves the page, started in
+// this console, and this program ends at once. The copies of earlier sessions are removed (not a running one).
+int serve_from_copy(const ExploreOptions& options) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "whitted-explore-copies";
+    std::filesystem::create_directories(folder);
+    std::error_code ignored;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ignored)) std::filesystem::remove(entry, ignored);
+    const std::filesystem::path self = own_executable();
+    const std::filesystem::path copy = folder / ("whitted-" + random_token().substr(0, 8) + self.extension().string());
+    std::filesystem::copy_file(self, copy);
+    std::vector<std::string> argv{copy.string(), "explore", options.scene, "--port", std::to_string(options.port),
+                                  "--threads", std::to_string(options.threads), "--from-copy"};
+    if (options.stage) argv.insert(argv.end(), {"--stage", std::to_string(*options.stage)});
+    start_detached(argv);
+    std::printf("whitted explore: serving from a copy of whitted, so that your builds can still relink it; "
+                "its link follows. Ctrl-C stops it.\n");
+    return exit_code::success;
+}
+
 int run_explore(const ExploreOptions& options) {
     // The scene's errors first, before anything is served: the student fixes them in the file.
     LoadedScene loaded = load_scene(options.scene);
@@ -49,6 +70,8 @@ int run_explore(const ExploreOptions& options) {
         std::fprintf(stderr, "whitted: %s\n", problem.c_str());
         return exit_code::bad_input;
     }
+    if (!options.no_rebuild && !options.from_copy && live_build() && running_programs_are_locked())
+        return serve_from_copy(options);
     const std::string token = random_token();
     const ScratchFolder scratch(token);
     ExploreSettings settings{options.scene, options.stage, options.threads, own_executable(), live_build(), scratch.path};
@@ -92,6 +115,7 @@ Command add_explore_command(CLI::App& app) {
     command->add_option("--threads", options->threads, "Threads for rendering; 0 = one per core")->check(CLI::Range(0, 1024));
     command->add_flag("--no-rebuild", options->no_rebuild,
                       "Render with this program as it is: do not rebuild it when a lab file is saved");
+    command->add_flag("--from-copy", options->from_copy)->group(""); // the copy that serves, on Windows
     command->footer("Example: whitted explore scenes/05_refraction.p3f\n"
                     "Exit code: 2 cannot serve what was given (a bad option, a missing or malformed scene file, labs not "
                     "done yet, a port in use), 3 whitted itself failed.");
