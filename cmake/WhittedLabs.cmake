@@ -178,8 +178,13 @@ function(whitted_renderer target)
     target_link_libraries(${target} PRIVATE whitted_no_live_build)
     return()
   endif()
+  # The worker compiles the lab files into objects of its own: explore rebuilds it on every save, often while the
+  # student's own build (make test) compiles the same lab file for `whitted` in the same build folder.
   set(worker ${target}-explore-worker)
-  whitted_program(${worker} "${A_LABS}" ${A_KERNELS} whitted_no_instructor_commands)
+  whitted_lab_objects(${target}_explore ${A_LIVE_LABS})
+  whitted_lab_mix(worker_labs ${target}_explore)
+  set_target_properties(${worker_labs} PROPERTIES EXCLUDE_FROM_ALL ON) # built when explore asks, as the worker
+  whitted_program(${worker} "${worker_labs}" ${A_KERNELS} whitted_no_instructor_commands)
   set_target_properties(${worker} PROPERTIES EXCLUDE_FROM_ALL ON)
   target_link_libraries(${worker} PRIVATE whitted_no_live_build)
   set(source ${PROJECT_BINARY_DIR}/explore/${target}_live_build$<CONFIG>.cpp)

@@ -18,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #ifdef __APPLE__
+#include <cstdint>
 #include <mach-o/dyld.h> // _NSGetExecutablePath
 #endif
 extern char** environ;
@@ -173,21 +174,27 @@ std::filesystem::path own_executable() {
     }
 }
 
-bool running_programs_are_locked() { return true; }
+void free_own_file() {
+    const std::filesystem::path self = own_executable();
+    if (self.empty()) return;
+    const std::wstring stem = self.stem().wstring() + L".running-";
+    std::error_code ignored;
+    try {
+        for (const auto& entry : std::filesystem::directory_iterator(self.parent_path(), ignored))
+            if (entry.path().filename().wstring().starts_with(stem)) std::filesystem::remove(entry.path(), ignored);
+    } catch (const std::filesystem::filesystem_error&) { // a folder that cannot be listed: nothing removed
+    }
+    const std::filesystem::path moved =
+        self.parent_path() / (stem + std::to_wstring(GetCurrentProcessId()) + self.extension().wstring());
+    if (!MoveFileExW(self.c_str(), moved.c_str(), MOVEFILE_REPLACE_EXISTING)) return; // as it was: locked
+    if (!CopyFileW(moved.c_str(), self.c_str(), TRUE)) MoveFileExW(moved.c_str(), self.c_str(), 0); // put back
+}
 
-void start_detached(const std::vector<std::string>& argv) {
-    if (argv.empty()) throw ChildStartError("no program to run");
-    std::wstring command_line;
-    for (const std::string& argument : argv) append_argument(command_line, utf16(argument));
-    STARTUPINFOW startup{};
-    startup.cb = sizeof startup;
-    PROCESS_INFORMATION started{};
-    // No handles inherited: a console program started so shares this console, its input and its output.
-    if (!CreateProcessW(utf16(argv[0]).c_str(), command_line.data(), nullptr, nullptr, FALSE, 0, nullptr, nullptr,
-                        &startup, &started))
-        throw ChildStartError("cannot run " + argv[0] + ": " + last_error());
-    CloseHandle(started.hThread);
-    CloseHandle(started.hProcess);
+void add_library_folder(const std::filesystem::path& folder) {
+    std::wstring path(GetEnvironmentVariableW(L"PATH", nullptr, 0), L'\0'); // its size with the final zero
+    if (!path.empty()) path.resize(GetEnvironmentVariableW(L"PATH", path.data(), static_cast<DWORD>(path.size())));
+    const std::wstring value = folder.wstring() + (path.empty() ? std::wstring() : L";" + path);
+    SetEnvironmentVariableW(L"PATH", value.c_str());
 }
 
 #else // POSIX
@@ -276,18 +283,10 @@ std::filesystem::path own_executable() {
 #endif
 }
 
-bool running_programs_are_locked() { return false; }
 
-void start_detached(const std::vector<std::string>& argv) {
-    if (argv.empty()) throw ChildStartError("no program to run");
-    if (access(argv[0].c_str(), X_OK) != 0) throw ChildStartError("cannot run " + argv[0] + ": " + std::strerror(errno));
-    std::vector<char*> args;
-    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
-    args.push_back(nullptr);
-    pid_t pid = -1;
-    if (const int error = posix_spawn(&pid, args[0], nullptr, nullptr, args.data(), environ); error != 0)
-        throw ChildStartError("cannot run " + argv[0] + ": " + std::strerror(error));
-}
+void free_own_file() {}
+
+void add_library_folder(const std::filesystem::path&) {}
 
 #endif // POSIX
 

@@ -62,12 +62,14 @@ ChildExit run_child(const std::vector<std::string>& argv, const std::filesystem:
 /// The path of the running program's own executable file.
 std::filesystem::path own_executable();
 
-/// True where the file of a running program cannot be rewritten (Windows): a build must not relink a program
-/// that is running.
-bool running_programs_are_locked();
+/// Lets a build rewrite this program's file while it runs. Windows locks the file of a running program (a build
+/// that relinks it fails), but lets it be renamed: the running program moves aside, to NAME.running-PID.exe
+/// beside it, and a copy takes its place. The moved files of earlier runs are removed (not a running one's).
+/// Nothing on other systems, where a build writes a new file and a running program keeps its old one.
+void free_own_file();
 
-/// Starts argv in this console (its output where ours goes) and leaves it running after this program ends.
-/// Throws ChildStartError.
-void start_detached(const std::vector<std::string>& argv);
+/// Lets the programs this one starts find their libraries in `folder` too (Windows: DLLs beside a program copied
+/// elsewhere; the folder goes first on the PATH they inherit). Nothing on other systems.
+void add_library_folder(const std::filesystem::path& folder);
 
 } // namespace whitted

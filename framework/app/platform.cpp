@@ -7,7 +7,20 @@
 #include <unistd.h> // isatty, access
 #endif
 
+#include <csignal>
+
 namespace whitted {
+namespace {
+std::atomic<bool>* interrupt_flag = nullptr; // set once, before the handler is installed
+extern "C" void on_interrupt(int) { interrupt_flag->store(true); }
+} // namespace
+
+void stop_on_interrupt(std::atomic<bool>& flag) {
+    static_assert(std::atomic<bool>::is_always_lock_free, "a signal handler may only set a lock-free atomic");
+    interrupt_flag = &flag;
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
+}
 
 void use_utf8_console() {
 #ifdef _WIN32

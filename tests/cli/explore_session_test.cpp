@@ -19,14 +19,19 @@ namespace {
 
 const std::string kScene = WHITTED_SCENES_DIR "/05_refraction.p3f";
 
-// A scratch folder of the test's own.
-std::filesystem::path scratch_folder() {
-    std::random_device random;
-    const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() / ("whitted-session-test-" + std::to_string(random()));
-    std::filesystem::create_directories(folder);
-    return folder;
-}
+// A scratch folder of the test's own, removed at its end (whether it passed or not).
+struct ScratchFolder {
+    std::filesystem::path path;
+    ScratchFolder() {
+        std::random_device random;
+        path = std::filesystem::temp_directory_path() / ("whitted-session-test-" + std::to_string(random()));
+        std::filesystem::create_directories(path);
+    }
+    ~ScratchFolder() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path, ignored);
+    }
+};
 
 // The session running in a thread until the test ends.
 class RunningSession {
@@ -64,7 +69,8 @@ ExploreSettings settings_for(std::filesystem::path worker, const std::filesystem
 } // namespace
 
 TEST(ExploreSession, ShowsWhatWhittedRenderWritesAndItsPassesTreesAndDifference) {
-    const std::filesystem::path scratch = scratch_folder();
+    const ScratchFolder folder;
+    const std::filesystem::path& scratch = folder.path;
     RunningSession session(settings_for(WHITTED_PROGRAM, scratch));
     const nlohmann::json state = session.rendered();
     ASSERT_EQ(state["render"].value("state", ""), "done") << state["render"].value("message", "") << "\n" << state.dump(1);
@@ -100,11 +106,11 @@ TEST(ExploreSession, ShowsWhatWhittedRenderWritesAndItsPassesTreesAndDifference)
     EXPECT_EQ(tree["pixel"], (nlohmann::json{110, 125}));
     EXPECT_EQ(tree["ray"]["kind"], "eye");
     EXPECT_GT(read_png_bytes(session->tree_picture(110, 125, 0), "the rays").width, 320);
-    std::filesystem::remove_all(scratch);
 }
 
 TEST(ExploreSession, ARequestItCannotAnswerSaysWhy) {
-    const std::filesystem::path scratch = scratch_folder();
+    const ScratchFolder folder;
+    const std::filesystem::path& scratch = folder.path;
     RunningSession session(settings_for(WHITTED_PROGRAM, scratch));
     const nlohmann::json state = session.rendered();
     ASSERT_EQ(state["render"].value("state", ""), "done") << state["render"].value("message", "");
@@ -122,15 +128,14 @@ TEST(ExploreSession, ARequestItCannotAnswerSaysWhy) {
     EXPECT_NE(message_of([&] { session->tree(1, 1, 3); }).find("--sample 3"), std::string::npos);
     EXPECT_EQ(message_of([&] { session->picture("nothing"); }), "no view called 'nothing'");
     EXPECT_EQ(message_of([&] { session->tree_picture(5, 5, 0); }), "no tree of that pixel and sample: click the pixel first");
-    std::filesystem::remove_all(scratch);
 }
 
 TEST(ExploreSession, AWorkerThatCannotRunIsAFailedRenderNotAFailedSession) {
-    const std::filesystem::path scratch = scratch_folder();
+    const ScratchFolder folder;
+    const std::filesystem::path& scratch = folder.path;
     RunningSession session(settings_for(scratch / "no-such-whitted", scratch));
     const nlohmann::json state = session.rendered();
     EXPECT_EQ(state["render"].value("state", ""), "failed");
     EXPECT_NE(state["render"].value("message", "").find("no-such-whitted"), std::string::npos) << state.dump(1);
     EXPECT_EQ(state["version"], 0); // no picture
-    std::filesystem::remove_all(scratch);
 }

@@ -8,6 +8,7 @@
 #include "explore/explore_session.hpp"
 #include "explore/live_build.hpp"
 #include "image_options.hpp"
+#include "platform.hpp"
 #include "stage_choice.hpp"
 #include "whitted/scene_loader.hpp"
 
@@ -25,41 +26,31 @@ struct ExploreOptions {
     int port = 0;
     int threads = 0;
     bool no_rebuild = false;
-    bool from_copy = false; // this program is the copy that serves (Windows: serve_from_copy)
 };
 
-// A folder of its own for the worker's files, removed at the end.
+// A new folder of a random name for the worker's files, readable by this user alone, removed at the end: in the
+// build folder (the student's own) when there is one, else in the system's temporary folder.
 struct ScratchFolder {
     std::filesystem::path path;
-    explicit ScratchFolder(const std::string& token)
-        : path(std::filesystem::temp_directory_path() / ("whitted-explore-" + token.substr(0, 12))) {
-        std::filesystem::create_directories(path);
+    explicit ScratchFolder(const std::optional<LiveBuild>& live) {
+        const std::filesystem::path parent =
+            live ? live->build_dir / "explore-scratch" : std::filesystem::temp_directory_path();
+        std::filesystem::create_directories(parent);
+        for (int attempt = 0; attempt < 100; ++attempt) {
+            path = parent / ("whitted-explore-" + random_token().substr(0, 16));
+            if (std::filesystem::create_directory(path)) {
+                std::error_code ignored;
+                std::filesystem::permissions(path, std::filesystem::perms::owner_all, ignored);
+                return;
+            }
+        }
+        throw std::runtime_error("cannot make a folder of its own in " + parent.string());
     }
     ~ScratchFolder() {
         std::error_code ignored;
         std::filesystem::remove_all(path, ignored);
     }
 };
-
-// Windows cannot rewrite the file of a running program: while the page is served, the student's own build of
-// `whitted` (make test, a lab's preset) would fail to link it. There a copy of whitted serves the page, started in
-// this console, and this program ends at once. The copies of earlier sessions are removed (not a running one).
-int serve_from_copy(const ExploreOptions& options) {
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "whitted-explore-copies";
-    std::filesystem::create_directories(folder);
-    std::error_code ignored;
-    for (const auto& entry : std::filesystem::directory_iterator(folder, ignored)) std::filesystem::remove(entry, ignored);
-    const std::filesystem::path self = own_executable();
-    const std::filesystem::path copy = folder / ("whitted-" + random_token().substr(0, 8) + self.extension().string());
-    std::filesystem::copy_file(self, copy);
-    std::vector<std::string> argv{copy.string(), "explore", options.scene, "--port", std::to_string(options.port),
-                                  "--threads", std::to_string(options.threads), "--from-copy"};
-    if (options.stage) argv.insert(argv.end(), {"--stage", std::to_string(*options.stage)});
-    start_detached(argv);
-    std::printf("whitted explore: serving from a copy of whitted, so that your builds can still relink it; "
-                "its link follows. Ctrl-C stops it.\n");
-    return exit_code::success;
-}
 
 int run_explore(const ExploreOptions& options) {
     // The scene's errors first, before anything is served: the student fixes them in the file.
@@ -70,12 +61,12 @@ int run_explore(const ExploreOptions& options) {
         std::fprintf(stderr, "whitted: %s\n", problem.c_str());
         return exit_code::bad_input;
     }
-    if (!options.no_rebuild && !options.from_copy && live_build() && running_programs_are_locked())
-        return serve_from_copy(options);
+    // While the page is served, the student's own builds (make test, a lab's preset) must still relink whitted.
+    free_own_file();
     const std::string token = random_token();
-    const ScratchFolder scratch(token);
-    ExploreSettings settings{options.scene, options.stage, options.threads, own_executable(), live_build(), scratch.path};
-    if (options.no_rebuild) settings.live.reset();
+    const std::optional<LiveBuild> live = options.no_rebuild ? std::nullopt : live_build();
+    const ScratchFolder scratch(live);
+    ExploreSettings settings{options.scene, options.stage, options.threads, own_executable(), live, scratch.path};
     if (settings.live) settings.worker = settings.live->worker;
     ExploreSession session(std::move(settings));
 
@@ -93,11 +84,13 @@ int run_explore(const ExploreOptions& options) {
         return exit_code::bad_input;
     }
     std::printf("whitted explore: open %s in your browser (this machine only; Ctrl-C stops)\n", server.url().c_str());
-    if (const std::optional<LiveBuild> live = options.no_rebuild ? std::nullopt : live_build())
-        std::printf("whitted explore: watching %s: a save rebuilds and renders again\n", live->labs_dir.string().c_str());
+    if (live) std::printf("whitted explore: watching %s: a save rebuilds and renders again\n", live->labs_dir.string().c_str());
     std::fflush(stdout);
-    const std::atomic<bool> never_stops{false}; // Ctrl-C ends the program
-    session.run(never_stops);
+    static std::atomic<bool> interrupted{false}; // Ctrl-C: the session ends, then the server, then the scratch folder
+    stop_on_interrupt(interrupted);
+    session.run(interrupted);
+    server.stop();
+    std::printf("whitted explore: stopped\n");
     return exit_code::success;
 }
 
@@ -115,7 +108,6 @@ Command add_explore_command(CLI::App& app) {
     command->add_option("--threads", options->threads, "Threads for rendering; 0 = one per core")->check(CLI::Range(0, 1024));
     command->add_flag("--no-rebuild", options->no_rebuild,
                       "Render with this program as it is: do not rebuild it when a lab file is saved");
-    command->add_flag("--from-copy", options->from_copy)->group(""); // the copy that serves, on Windows
     command->footer("Example: whitted explore scenes/05_refraction.p3f\n"
                     "Exit code: 2 cannot serve what was given (a bad option, a missing or malformed scene file, labs not "
                     "done yet, a port in use), 3 whitted itself failed.");

@@ -55,6 +55,7 @@ const legends = { picture: "your labs' picture", goal: "the goal: the lab's pict
 const fates = { below_min_weight: "not traced: its weight from the eye is below the minimum weight (1/1024)",
   over_budget: "not traced: the pixel's budget of rays is used up" };
 let state = null, view = "picture", shownVersion = -1, shownView = "", loading = false, zoom = 1, pixel = null;
+let clicks = 0, treeVersion = -1; // the latest click (older answers are dropped), the picture its tree is of
 
 function el(tag, content, cls) { const e = document.createElement(tag); if (content !== undefined) e.textContent = content; if (cls) e.className = cls; return e; }
 function num(c) { return typeof c === "number" ? c.toFixed(3) : "not a number"; }
@@ -75,10 +76,11 @@ function showProblems() {
   if (state.scene_error) box.append(el("div", "The scene does not load:", "bad"), el("div", state.scene_error, "error"));
   const build = state.build;
   if (build && build.state === "failed") {
-    box.append(el("div", "Your labs do not compile (" + build.why + "). The picture is the last one that built.", "bad"));
+    box.append(el("div", "Your labs do not build (" + build.why + "). The picture is the last one that built.", "bad"));
     for (const e of build.errors) {
       const line = el("div", "", "compile-error");
-      line.append(el("span", e.file + ":" + e.line + (e.column ? ":" + e.column : "") + ": ", "where"), el("span", e.message, "error"));
+      if (e.file) line.append(el("span", e.file + ":" + e.line + (e.column ? ":" + e.column : "") + ": ", "where"));
+      line.append(el("span", e.message, "error"));
       box.append(line);
     }
     const details = el("details"); details.append(el("summary", "the compiler's whole output"), el("pre", build.output));
@@ -173,11 +175,14 @@ function showMarker() {
 
 async function showTree(x, y, sample) {
   pixel = { x, y, sample };
+  const click = ++clicks;
   showMarker();
   $("tree").replaceChildren(el("p", "tracing pixel (" + x + ", " + y + ")…", "muted"));
   $("rays").hidden = true;
   try {
     const tree = await getJson("/tree", { x, y, sample });
+    if (click !== clicks) return; // a later click's tree comes
+    treeVersion = tree.version;
     const head = $("pixel");
     head.replaceChildren(el("h2", "pixel (" + x + ", " + y + ") at stage " + tree.stage), el("p", "pixel value " + vec(tree.color)));
     if (tree.sample) {
@@ -191,10 +196,15 @@ async function showTree(x, y, sample) {
     const ul = el("ul"); ul.append(rayItem(tree.ray));
     $("tree").replaceChildren(ul);
     $("tree").dataset.pixel = x + " " + y + " " + sample;
-    $("rays").src = await getImage("/tree.png", { x, y, sample });
+    const rays = await getImage("/tree.png", { x, y, sample });
+    if (click !== clicks) return;
+    $("rays").src = rays;
     $("rays").alt = "the rays of pixel (" + x + ", " + y + "): over the scene, and from the side";
     $("rays").hidden = false;
-  } catch (error) { $("tree").replaceChildren(el("p", error.message, "error")); $("tree").dataset.pixel = "error"; }
+  } catch (error) {
+    if (click !== clicks) return;
+    $("tree").replaceChildren(el("p", error.message, "error")); $("tree").dataset.pixel = "error";
+  }
 }
 
 // The pixel under the mouse: inside the picture's border, scaled from the picture as shown to its pixels.
@@ -213,6 +223,11 @@ async function poll() {
     zoom = Math.max(1, Math.floor(640 / Math.max(state.width || 1, state.height || 1)));
     document.body.dataset.version = state.version;
     showStatus(); showProblems(); showViews(); showPicture();
+    // A new whole picture (a save): the pixel shown is traced again, with the new code.
+    if (pixel && state.version !== treeVersion && !state.preview && state.activity === "idle" && treeVersion !== -2) {
+      treeVersion = -2; // until its answer
+      showTree(pixel.x, pixel.y, pixel.sample);
+    }
     if (view === "difference" || view === "goal") showNumbers();
   } catch (error) { $("status").replaceChildren(el("span", "whitted explore does not answer: " + error.message, "error")); }
   setTimeout(poll, 500);

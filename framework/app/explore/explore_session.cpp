@@ -10,8 +10,13 @@
 #include "whitted/passes.hpp"
 #include "whitted/scene_loader.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cmath>
 #include <thread>
+#include <tuple>
+#include <vector>
 
 namespace whitted {
 namespace {
@@ -30,6 +35,26 @@ std::string failure_text(const WorkerRun& run, const std::string& doing) {
     const std::string said = tail(run.output);
     if (run.exit.crashed) return "your labs crashed while " + doing + " (" + run.exit.reason + ")\n" + said;
     return said.empty() ? doing + " failed: " + run.exit.reason : said;
+}
+
+// The lines of a build's output that say "error" or name an undefined function (any case), at most 10: the
+// linker's errors have no line number.
+std::vector<std::string> lines_with_error(const std::string& output) {
+    std::vector<std::string> found;
+    std::size_t start = 0;
+    while (start < output.size() && found.size() < 10) {
+        const std::size_t end = std::min(output.find('\n', start), output.size());
+        std::string line = output.substr(start, end - start);
+        start = end + 1;
+        std::string lower = line;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        for (const char* word : {"error", "undefined reference", "undefined symbol"}) // GNU ld, lld and Apple's ld
+            if (lower.find(word) != std::string::npos) {
+                found.push_back(std::move(line));
+                break;
+            }
+    }
+    return found;
 }
 
 std::string tree_key(int x, int y, int sample) {
@@ -55,7 +80,9 @@ struct ExploreSession::Snapshot {
         if (settings.live)
             for (const auto& entry : std::filesystem::directory_iterator(settings.live->labs_dir, error)) {
                 const std::filesystem::path& path = entry.path();
-                if (path.extension() == ".cpp" || path.extension() == ".hpp") add(path);
+                // Not an editor's hidden files (Emacs's lock file .#05_refraction.cpp): the student's saves only.
+                const bool hidden = path.filename().string().starts_with(".");
+                if (!hidden && (path.extension() == ".cpp" || path.extension() == ".hpp")) add(path);
             }
         return snapshot;
     }
@@ -73,7 +100,10 @@ struct ExploreSession::Snapshot {
 };
 
 ExploreSession::ExploreSession(ExploreSettings settings)
-    : settings_(std::move(settings)), worker_(settings_.worker, settings_.scene, settings_.scratch, settings_.threads) {
+    : settings_(std::move(settings)), worker_(settings_.scene, settings_.scratch, settings_.threads) {
+    // A live build's worker runs from a copy (build_worker); without one, the program given runs itself.
+    if (settings_.live) add_library_folder(settings_.live->worker.parent_path());
+    else program_ = settings_.worker;
     // A lab's scene (scenes/05_refraction.p3f) has its goal picture in the handout (docs/labs/images/).
     const std::filesystem::path scene(settings_.scene);
     for (const LabInfo& lab : kLabs) {
@@ -104,9 +134,22 @@ void ExploreSession::run(const std::atomic<bool>& stopping) {
             if (now == seen) continue;
             why = now.changes_since(seen);
             seen = std::move(now);
+            ++saves_;
             break;
         }
     }
+}
+
+std::filesystem::path ExploreSession::program() const {
+    const std::lock_guard lock(mutex_);
+    return program_;
+}
+
+// A request's run: at most 120 s, and stopped by the next save (a lab that loops forever must not hold it).
+KeepGoing ExploreSession::for_a_request() const {
+    const KeepGoing in_time = for_at_most(120);
+    const int saves = saves_;
+    return [this, in_time, saves] { return in_time() && saves_ == saves; };
 }
 
 void ExploreSession::set_activity(const std::string& activity, const std::string& note) {
@@ -148,18 +191,38 @@ bool ExploreSession::load_scene_facts() {
 // Rebuilds the worker; false (and the compiler's errors on the page) when it does not build.
 bool ExploreSession::build_worker(const std::string& why) {
     set_activity("building", why + ": rebuilding " + settings_.live->worker_target);
-    WorkerRun run;
-    {
-        const std::unique_lock exclusive(worker_in_use_); // no render runs the program while it is rewritten
-        // Never stopped half-way (stopping cmake would leave its compilers running): a save meanwhile builds again.
-        run = worker_.build(*settings_.live, [] { return true; });
-    }
+    // Never stopped half-way (stopping cmake would leave its compilers running): a save meanwhile builds again.
+    const WorkerRun run = worker_.build(*settings_.live, [] { return true; });
     nlohmann::json errors = nlohmann::json::array();
     for (const CompilerError& error : compiler_errors(run.output))
         errors.push_back({{"file", error.file}, {"line", error.line}, {"column", error.column}, {"message", error.message}});
-    const bool built = run.exit.success();
+    if (errors.empty()) // the linker's errors and others without a line: the lines that say "error"
+        for (const std::string& line : lines_with_error(run.output))
+            errors.push_back({{"file", ""}, {"line", 0}, {"column", 0}, {"message", line}});
+    bool built = run.exit.success();
+    std::string copy_error;
+    if (built) {
+        // The new program runs from a copy of its own; the last one's copy goes (unless it still runs: Windows).
+        const std::filesystem::path& worker = settings_.live->worker;
+        const std::filesystem::path copy =
+            settings_.scratch / ("worker-" + std::to_string(++builds_) + worker.extension().string());
+        std::error_code error;
+        std::filesystem::copy_file(worker, copy, std::filesystem::copy_options::overwrite_existing, error);
+        if (error) {
+            built = false;
+            copy_error = "cannot copy " + worker.string() + " to " + copy.string() + ": " + error.message();
+        } else {
+            std::filesystem::path old;
+            {
+                const std::lock_guard lock(mutex_);
+                old = std::exchange(program_, copy);
+            }
+            if (!old.empty()) std::filesystem::remove(old, error);
+        }
+    }
     const std::lock_guard lock(mutex_);
-    build_ = {{"state", built ? "built" : "failed"}, {"why", why}, {"errors", errors}, {"output", tail(run.output, 200)},
+    build_ = {{"state", built ? "built" : "failed"}, {"why", why}, {"errors", errors},
+              {"output", tail(run.output, 200) + copy_error},
               {"exit", run.exit.reason}, {"seconds", run.seconds}};
     if (!built) {
         activity_ = "idle";
@@ -176,6 +239,8 @@ void ExploreSession::render_picture(const KeepGoing& keep_going) {
         width = width_;
         height = height_;
     }
+    const std::filesystem::path program = this->program();
+    if (program.empty()) return; // nothing built yet
     struct Step {
         bool preview;
         std::optional<std::pair<int, int>> size;
@@ -189,16 +254,13 @@ void ExploreSession::render_picture(const KeepGoing& keep_going) {
     std::string missing;
     for (const Step& step : steps) {
         set_activity("rendering", step.preview ? "a quarter-size picture first" : "the whole picture");
-        WorkerRun run;
-        {
-            const std::shared_lock shared(worker_in_use_);
-            run = worker_.render(RenderJob{stage, step.size, ""}, keep_going);
-            if (!settings_.stage && stage && !run.exit.crashed && run.exit.code == exit_code::bad_input) {
-                missing = tail(run.output);
-                stage.reset();
-                run = worker_.render(RenderJob{stage, step.size, ""}, keep_going);
-            }
+        WorkerRun run = worker_.render(program, RenderJob{stage, step.size, ""}, keep_going);
+        if (!settings_.stage && stage && !run.exit.crashed && run.exit.code == exit_code::bad_input) {
+            missing = tail(run.output);
+            stage.reset();
+            run = worker_.render(program, RenderJob{stage, step.size, ""}, keep_going);
         }
+        if (run.exit.reason == "stopped" && !keep_going()) return; // a save came: the next render replaces it
         // Exit 1: a picture with NaN pixels, marked; shown with render's message.
         const bool drawn = run.png && (run.exit.success() || (!run.exit.crashed && run.exit.code == 1));
         const std::lock_guard lock(mutex_);
@@ -213,7 +275,6 @@ void ExploreSession::render_picture(const KeepGoing& keep_going) {
         stage_ = run.json ? run.json->value("stage", 0) : 0;
         render_["stage"] = stage_;
         views_.clear();
-        trees_.clear();
         image_.reset();
         difference_ = nullptr;
         if (step.preview) continue;
@@ -266,11 +327,7 @@ std::string ExploreSession::picture(const std::string& view) {
         stage = stage_;
         version = version_;
     }
-    WorkerRun run;
-    {
-        const std::shared_lock shared(worker_in_use_);
-        run = worker_.render(RenderJob{stage, std::nullopt, view}, for_at_most(120));
-    }
+    const WorkerRun run = worker_.render(program(), RenderJob{stage, std::nullopt, view}, for_a_request());
     if (!run.png || !run.exit.success()) throw ExploreRequestError(failure_text(run, "rendering the " + view + " pass"));
     const std::lock_guard lock(mutex_);
     if (version == version_) views_[view] = *run.png;
@@ -278,7 +335,7 @@ std::string ExploreSession::picture(const std::string& view) {
 }
 
 nlohmann::json ExploreSession::tree(int x, int y, int sample) {
-    int stage = 0;
+    int stage = 0, version = 0;
     {
         const std::lock_guard lock(mutex_);
         if (stage_ == 0) throw ExploreRequestError("no picture yet: a tree is traced at the picture's stage");
@@ -287,16 +344,16 @@ nlohmann::json ExploreSession::tree(int x, int y, int sample) {
                                       std::to_string(width_) + "x" + std::to_string(height_) + " picture");
         if (sample < 0) throw ExploreRequestError("sample " + std::to_string(sample) + ": samples are numbered from 0");
         stage = stage_;
+        version = version_;
     }
-    WorkerRun run;
-    {
-        const std::shared_lock shared(worker_in_use_);
-        run = worker_.trace(x, y, sample > 0 ? std::optional(sample) : std::nullopt, stage, for_at_most(120));
-    }
+    const WorkerRun run = worker_.trace(program(), x, y, sample > 0 ? std::optional(sample) : std::nullopt, stage, for_a_request());
     if (!run.json || !run.exit.success()) throw ExploreRequestError(failure_text(run, "tracing the pixel"));
+    nlohmann::json tree = *run.json;
+    tree["version"] = version; // the picture it belongs to
     const std::lock_guard lock(mutex_);
-    if (run.png) trees_[tree_key(x, y, sample)] = std::move(*run.png);
-    return std::move(*run.json);
+    if (trees_.size() > 100) trees_.clear();
+    if (run.png) trees_[tree_key(x, y, sample)] = *run.png;
+    return tree;
 }
 
 std::string ExploreSession::tree_picture(int x, int y, int sample) const {

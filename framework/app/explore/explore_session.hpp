@@ -3,7 +3,9 @@
 // and renders again. The page asks for its state, its pictures and its trees (explore_server.hpp).
 //
 // Why: one place holds what the page shows, so that a request never waits for a render or a build and always
-// gets the last good picture, with the build's errors or the render's failure beside it.
+// gets the last good picture, with the build's errors or the render's failure beside it. Each build that
+// succeeds is copied to the scratch folder and the copy runs: a build that fails keeps the last good program,
+// and a build never waits for a running one (nor fails on Windows to rewrite a program that runs).
 #pragma once
 
 #include "explore/explore_worker.hpp"
@@ -18,7 +20,6 @@
 #include <map>
 #include <mutex>
 #include <optional>
-#include <shared_mutex>
 #include <string>
 
 namespace whitted {
@@ -57,12 +58,16 @@ class ExploreSession {
     bool build_worker(const std::string& why);
     void render_picture(const KeepGoing& keep_going);
     void set_activity(const std::string& activity, const std::string& note);
+    std::filesystem::path program() const;
+    KeepGoing for_a_request() const;
 
     ExploreSettings settings_;
     ExploreWorker worker_;
-    std::shared_mutex worker_in_use_; // shared: a run of the worker; exclusive: its rebuild
+    std::atomic<int> saves_{0}; // counts the saves seen: a request's run stops at the next one
+    int builds_ = 0;            // counts the builds that succeeded (the run loop's own)
 
     mutable std::mutex mutex_; // guards everything below
+    std::filesystem::path program_;    // the worker that runs: this program, or a copy of the last good build
     std::string activity_ = "starting", activity_note_;
     std::chrono::steady_clock::time_point activity_start_ = std::chrono::steady_clock::now();
     int width_ = 0, height_ = 0;       // the scene's picture size

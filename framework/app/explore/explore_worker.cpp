@@ -23,8 +23,8 @@ std::optional<std::string> take_file(const std::filesystem::path& path) {
 
 } // namespace
 
-ExploreWorker::ExploreWorker(std::filesystem::path program, std::string scene, std::filesystem::path scratch, int threads)
-    : program_(std::move(program)), scene_(std::move(scene)), scratch_(std::move(scratch)), threads_(threads) {}
+ExploreWorker::ExploreWorker(std::string scene, std::filesystem::path scratch, int threads)
+    : scene_(std::move(scene)), scratch_(std::move(scratch)), threads_(threads) {}
 
 WorkerRun ExploreWorker::run(std::vector<std::string> argv, const std::string& png, const std::string& json,
                              const KeepGoing& keep_going) const {
@@ -58,8 +58,9 @@ WorkerRun ExploreWorker::run(std::vector<std::string> argv, const std::string& p
     return result;
 }
 
-WorkerRun ExploreWorker::render(const RenderJob& job, const KeepGoing& keep_going) const {
-    std::vector<std::string> argv{program_.string(), "render", scene_, "--quiet", "--threads", std::to_string(threads_)};
+WorkerRun ExploreWorker::render(const std::filesystem::path& program, const RenderJob& job,
+                                const KeepGoing& keep_going) const {
+    std::vector<std::string> argv{program.string(), "render", scene_, "--quiet", "--threads", std::to_string(threads_)};
     if (job.stage) argv.insert(argv.end(), {"--stage", std::to_string(*job.stage)});
     if (job.size)
         argv.insert(argv.end(), {"--width", std::to_string(job.size->first), "--height", std::to_string(job.size->second)});
@@ -67,12 +68,12 @@ WorkerRun ExploreWorker::render(const RenderJob& job, const KeepGoing& keep_goin
     return run(std::move(argv), "-o", "--stats-json", keep_going);
 }
 
-WorkerRun ExploreWorker::trace(int x, int y, std::optional<int> sample, int stage, const KeepGoing& keep_going) const {
-    std::vector<std::string> argv{program_.string(), "trace", scene_, "--pixel", std::to_string(x), std::to_string(y),
+WorkerRun ExploreWorker::trace(const std::filesystem::path& program, int x, int y, std::optional<int> sample, int stage,
+                               const KeepGoing& keep_going) const {
+    std::vector<std::string> argv{program.string(), "trace", scene_, "--pixel", std::to_string(x), std::to_string(y),
                                   "--stage", std::to_string(stage), "--threads", std::to_string(threads_)};
     if (sample) argv.insert(argv.end(), {"--sample", std::to_string(*sample)});
-    WorkerRun tree = run(std::move(argv), "--picture", "--json", keep_going);
-    return tree;
+    return run(std::move(argv), "--picture", "--json", keep_going);
 }
 
 WorkerRun ExploreWorker::build(const LiveBuild& build, const KeepGoing& keep_going) const {

@@ -42,14 +42,15 @@ using KeepGoing = std::function<bool()>;
 
 class ExploreWorker {
   public:
-    /// The worker `program` for `scene`, writing to `scratch` (which must exist), rendering with `threads`.
-    ExploreWorker(std::filesystem::path program, std::string scene, std::filesystem::path scratch, int threads);
+    /// Runs for `scene`, writing to `scratch` (which must exist), rendering with `threads`.
+    ExploreWorker(std::string scene, std::filesystem::path scratch, int threads);
 
-    /// `whitted render` of `job`, with its picture and its --stats-json.
-    WorkerRun render(const RenderJob& job, const KeepGoing& keep_going) const;
-    /// `whitted trace` of pixel (x, y) at `stage`, sample `sample` (none: the pixel's centre or sample 0), with its
+    /// `program render` (a whitted) of `job`, with its picture and its --stats-json.
+    WorkerRun render(const std::filesystem::path& program, const RenderJob& job, const KeepGoing& keep_going) const;
+    /// `program trace` of pixel (x, y) at `stage`, sample `sample` (none: the pixel's centre or sample 0), with its
     /// --json and --picture.
-    WorkerRun trace(int x, int y, std::optional<int> sample, int stage, const KeepGoing& keep_going) const;
+    WorkerRun trace(const std::filesystem::path& program, int x, int y, std::optional<int> sample, int stage,
+                    const KeepGoing& keep_going) const;
     /// `cmake --build` of the live build's worker target.
     WorkerRun build(const LiveBuild& build, const KeepGoing& keep_going) const;
 
@@ -57,7 +58,6 @@ class ExploreWorker {
     WorkerRun run(std::vector<std::string> argv, const std::string& png, const std::string& json,
                   const KeepGoing& keep_going) const;
 
-    std::filesystem::path program_;
     std::string scene_;
     std::filesystem::path scratch_;
     int threads_;

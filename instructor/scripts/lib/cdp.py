@@ -5,6 +5,7 @@ Chromium reads commands from its file descriptor 3 and writes answers and events
 object ended by a NUL byte."""
 import json
 import os
+import select
 import subprocess
 import time
 
@@ -41,7 +42,8 @@ class Browser:
 
     def _read_message(self, deadline):
         while b"\0" not in self._buffer:
-            if time.monotonic() > deadline:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0 or not select.select([self._from_browser], [], [], remaining)[0]:
                 raise TimeoutError("Chromium did not answer in time")
             chunk = os.read(self._from_browser, 1 << 16)
             if not chunk:

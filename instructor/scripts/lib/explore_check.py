@@ -12,6 +12,8 @@ import json
 import math
 import os
 import re
+import select
+import signal
 import subprocess
 import sys
 import time
@@ -29,18 +31,34 @@ def say(text):
 
 
 def start_explore(whitted, scene, cwd, log):
-    """Starts `whitted explore SCENE`; returns the process and the link it prints."""
-    process = subprocess.Popen([whitted, "explore", scene], cwd=cwd, stdout=subprocess.PIPE, stderr=log, text=True)
+    """Starts `whitted explore SCENE` in a session of its own; returns the process and the link it prints."""
+    process = subprocess.Popen([whitted, "explore", scene], cwd=cwd, stdout=subprocess.PIPE, stderr=log, text=True,
+                               start_new_session=True)
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:
-        line = process.stdout.readline()
+        ready, _, _ = select.select([process.stdout], [], [], max(0.0, deadline - time.monotonic()))
+        line = process.stdout.readline() if ready else ""
         if not line:
             break
         found = re.search(r"(http://127\.0\.0\.1:\d+/\?token=[0-9a-f]{32})", line)
         if found:
             return process, found.group(1)
-    process.kill()
+    stop_explore(process)
     raise SystemExit("test-explore-browser: whitted explore printed no link")
+
+
+def stop_explore(process):
+    """Ctrl-C's signal to explore, which ends its session and removes its scratch folder; then its whole group."""
+    process.send_signal(signal.SIGTERM)
+    try:
+        process.wait(timeout=30)
+    except subprocess.TimeoutExpired:
+        pass
+    try:
+        os.killpg(process.pid, signal.SIGKILL)  # anything it left running (a render, a build)
+    except ProcessLookupError:
+        pass
+    process.wait()
 
 
 def wait_for_picture(browser, view="picture", after=0, timeout=120):
@@ -111,8 +129,9 @@ def check(chromium, handout, work):
     log = open(os.path.join(work, "explore.log"), "w")
     started = time.monotonic()
     process, url = start_explore(whitted, scene, handout, log)
-    browser = Browser(chromium, os.path.join(work, "profile"))
+    browser = None
     try:
+        browser = Browser(chromium, os.path.join(work, "profile"))
         try:
             urllib.request.urlopen(url.split("?")[0] + "state", timeout=10)
             raise SystemExit("test-explore-browser: /state answered without the token")
@@ -175,20 +194,21 @@ def check(chromium, handout, work):
         with open(lab, "w", encoding="utf-8") as out:
             out.write(original)
         new_version = wait_for_picture(browser, "picture", after=version, timeout=180)
-        if browser.evaluate("document.getElementById('problems').textContent.includes('do not compile')"):
+        if browser.evaluate("document.getElementById('problems').textContent.includes('do not build')"):
             raise SystemExit("test-explore-browser: the compile error is still shown after the fix")
         say(f"ok  mended: the new picture (version {new_version}) {time.monotonic() - saved:.1f} s after the save")
     finally:
-        browser.close()
-        process.terminate()
-        process.wait(timeout=30)
+        if browser:
+            browser.close()
+        stop_explore(process)
 
 
 def screenshot(chromium, whitted, scene, x, y, out, work):
     log = open(os.path.join(work, "explore.log"), "w")
     process, url = start_explore(whitted, scene, os.getcwd(), log)
-    browser = Browser(chromium, os.path.join(work, "profile"), width=1500, height=1250)
+    browser = None
     try:
+        browser = Browser(chromium, os.path.join(work, "profile"), width=1500, height=1250)
         browser.open(url)
         wait_for_picture(browser)
         state = json.loads(urllib.request.urlopen(url.replace("/?", "/state?"), timeout=10).read())
@@ -198,9 +218,9 @@ def screenshot(chromium, whitted, scene, x, y, out, work):
         time.sleep(0.5)
         browser.screenshot(out)
     finally:
-        browser.close()
-        process.terminate()
-        process.wait(timeout=30)
+        if browser:
+            browser.close()
+        stop_explore(process)
 
 
 if __name__ == "__main__":
