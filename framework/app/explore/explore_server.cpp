@@ -94,7 +94,8 @@ ExploreServer::ExploreServer(ExploreContent content, std::string token) : impl_(
     server.set_exception_handler([](const httplib::Request& request, httplib::Response& response, std::exception_ptr thrown) {
         try {
             std::rethrow_exception(thrown);
-        } catch (const ExploreRequestError& error) {
+        } catch (const ExploreRequestError& error) { // the page shows it; the terminal too
+            std::fprintf(stderr, "whitted explore: %s %s: %s\n", request.method.c_str(), request.path.c_str(), error.what());
             send_json(response, 400, {{"error", error.what()}});
         } catch (const std::exception& error) {
             std::fprintf(stderr, "whitted explore: %s %s: %s\n", request.method.c_str(), request.path.c_str(), error.what());

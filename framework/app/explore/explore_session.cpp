@@ -14,6 +14,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <thread>
 #include <tuple>
 #include <vector>
@@ -227,6 +228,10 @@ bool ExploreSession::build_worker(const std::string& why) {
     if (!built) {
         activity_ = "idle";
         activity_note_ = "the build failed: the picture is the last one that built";
+        const CompilerError first = errors.empty() ? CompilerError{"", 0, 0, copy_error}
+                                                   : CompilerError{errors[0]["file"], errors[0]["line"], 0, errors[0]["message"]};
+        std::fprintf(stderr, "whitted explore: your labs do not build: %s%s%s\n", first.file.c_str(),
+                     first.file.empty() ? "" : (":" + std::to_string(first.line) + ": ").c_str(), first.message.c_str());
     }
     return built;
 }
@@ -268,7 +273,11 @@ void ExploreSession::render_picture(const KeepGoing& keep_going) {
                    {"message", (missing.empty() ? "" : missing + "\n") + (drawn ? tail(run.output) : failure_text(run, "rendering"))}};
         activity_ = drawn && step.preview ? "rendering" : "idle";
         activity_note_ = drawn ? "" : "the render failed: the picture is the last one that rendered";
-        if (!drawn) return;
+        if (!drawn) {
+            const std::string said = render_["message"];
+            std::fprintf(stderr, "whitted explore: the render failed: %s\n", said.substr(0, said.find('\n')).c_str());
+            return;
+        }
         png_ = std::move(*run.png);
         ++version_;
         preview_ = step.preview;
