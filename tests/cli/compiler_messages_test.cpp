@@ -57,3 +57,16 @@ TEST(CompilerErrors, AtMostTheLimitAndNoOverflowOnAHugeLineNumber) {
     EXPECT_EQ(compiler_errors(output, 3).size(), 3u);
     EXPECT_TRUE(compiler_errors("a.cpp:99999999999999999999: error: e\n").empty()); // not a line number; no throw
 }
+
+TEST(BuildErrors, TheLinkersLinesWhenNoCompilerErrorHasALine) {
+    const std::string linked = "/usr/bin/ld: CMakeFiles/w.dir/labs/05_refraction.cpp.o: in function `call_it()':\n"
+                               "05_refraction.cpp:(.text+0x1): undefined reference to `not_defined_anywhere()'\n"
+                               "collect2: error: ld returned 1 exit status\n"
+                               "[100%] Built target whitted_framework\n";
+    const std::vector<CompilerError> errors = build_errors(linked);
+    ASSERT_EQ(errors.size(), 2u);
+    expect_error(errors[0], "", 0, 0, "05_refraction.cpp:(.text+0x1): undefined reference to `not_defined_anywhere()'");
+    expect_error(errors[1], "", 0, 0, "collect2: error: ld returned 1 exit status");
+    // With a compiler error that has its line, that one alone.
+    EXPECT_EQ(build_errors("a.cpp:3:1: error: e\ncollect2: error: ld returned 1\n").size(), 1u);
+}

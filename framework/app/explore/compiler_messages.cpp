@@ -1,5 +1,7 @@
 #include "explore/compiler_messages.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <optional>
 
@@ -75,20 +77,46 @@ std::optional<CompilerError> msvc_error(std::string_view line) {
     return error;
 }
 
-} // namespace
 
-std::vector<CompilerError> compiler_errors(std::string_view output, std::size_t limit) {
-    std::vector<CompilerError> errors;
+// Calls `take(line)` on each line of `output` (without its "\r\n" or "\n") while it returns true.
+template <typename Take>
+void for_each_line(std::string_view output, Take take) {
     std::size_t start = 0;
-    while (start < output.size() && errors.size() < limit) {
+    while (start < output.size()) {
         std::size_t end = output.find('\n', start);
         if (end == std::string_view::npos) end = output.size();
         std::string_view line = output.substr(start, end - start);
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
         start = end + 1;
+        if (!take(line)) return;
+    }
+}
+
+} // namespace
+
+std::vector<CompilerError> compiler_errors(std::string_view output, std::size_t limit) {
+    std::vector<CompilerError> errors;
+    for_each_line(output, [&](std::string_view line) {
         if (std::optional<CompilerError> error = gnu_error(line)) errors.push_back(std::move(*error));
         else if (std::optional<CompilerError> msvc = msvc_error(line)) errors.push_back(std::move(*msvc));
-    }
+        return errors.size() < limit;
+    });
+    return errors;
+}
+
+std::vector<CompilerError> build_errors(std::string_view output) {
+    std::vector<CompilerError> errors = compiler_errors(output);
+    if (!errors.empty()) return errors;
+    for_each_line(output, [&](std::string_view line) {
+        std::string lower(line);
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        for (const char* word : {"error", "undefined reference", "undefined symbol"}) // GNU ld, lld and Apple's ld
+            if (lower.find(word) != std::string::npos) {
+                errors.push_back(CompilerError{"", 0, 0, std::string(line)});
+                break;
+            }
+        return errors.size() < 10;
+    });
     return errors;
 }
 

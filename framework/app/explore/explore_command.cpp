@@ -66,9 +66,7 @@ int run_explore(const ExploreOptions& options) {
     const std::string token = random_token();
     const std::optional<LiveBuild> live = options.no_rebuild ? std::nullopt : live_build();
     const ScratchFolder scratch(live);
-    ExploreSettings settings{options.scene, options.stage, options.threads, own_executable(), live, scratch.path};
-    if (settings.live) settings.worker = settings.live->worker;
-    ExploreSession session(std::move(settings));
+    ExploreSession session(ExploreSettings{options.scene, options.stage, options.threads, own_executable(), live, scratch.path});
 
     ExploreContent content;
     content.page = explore_page();
@@ -109,8 +107,8 @@ Command add_explore_command(CLI::App& app) {
     command->add_flag("--no-rebuild", options->no_rebuild,
                       "Render with this program as it is: do not rebuild it when a lab file is saved");
     command->footer("Example: whitted explore scenes/05_refraction.p3f\n"
-                    "Exit code: 2 cannot serve what was given (a bad option, a missing or malformed scene file, labs not "
-                    "done yet, a port in use), 3 whitted itself failed.");
+                    "Exit code: 0 stopped with Ctrl-C, 2 cannot serve what was given (a bad option, a missing or malformed "
+                    "scene file, a port in use), 3 whitted itself failed. A lab not done yet is told on the page.");
     return Command{command, [options] { return run_explore(*options); }};
 }
 

@@ -11,7 +11,6 @@
 #include "whitted/scene_loader.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -36,26 +35,6 @@ std::string failure_text(const WorkerRun& run, const std::string& doing) {
     const std::string said = tail(run.output);
     if (run.exit.crashed) return "your labs crashed while " + doing + " (" + run.exit.reason + ")\n" + said;
     return said.empty() ? doing + " failed: " + run.exit.reason : said;
-}
-
-// The lines of a build's output that say "error" or name an undefined function (any case), at most 10: the
-// linker's errors have no line number.
-std::vector<std::string> lines_with_error(const std::string& output) {
-    std::vector<std::string> found;
-    std::size_t start = 0;
-    while (start < output.size() && found.size() < 10) {
-        const std::size_t end = std::min(output.find('\n', start), output.size());
-        std::string line = output.substr(start, end - start);
-        start = end + 1;
-        std::string lower = line;
-        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        for (const char* word : {"error", "undefined reference", "undefined symbol"}) // GNU ld, lld and Apple's ld
-            if (lower.find(word) != std::string::npos) {
-                found.push_back(std::move(line));
-                break;
-            }
-    }
-    return found;
 }
 
 std::string tree_key(int x, int y, int sample) {
@@ -102,7 +81,7 @@ struct ExploreSession::Snapshot {
 
 ExploreSession::ExploreSession(ExploreSettings settings)
     : settings_(std::move(settings)), worker_(settings_.scene, settings_.scratch, settings_.threads) {
-    // A live build's worker runs from a copy (build_worker); without one, the program given runs itself.
+    // A live build's worker runs from a copy of each good build (build_worker); without one, the program given.
     if (settings_.live) add_library_folder(settings_.live->worker.parent_path());
     else program_ = settings_.worker;
     // A lab's scene (scenes/05_refraction.p3f) has its goal picture in the handout (docs/labs/images/).
@@ -192,14 +171,8 @@ bool ExploreSession::load_scene_facts() {
 // Rebuilds the worker; false (and the compiler's errors on the page) when it does not build.
 bool ExploreSession::build_worker(const std::string& why) {
     set_activity("building", why + ": rebuilding " + settings_.live->worker_target);
-    // Never stopped half-way (stopping cmake would leave its compilers running): a save meanwhile builds again.
-    const WorkerRun run = worker_.build(*settings_.live, [] { return true; });
-    nlohmann::json errors = nlohmann::json::array();
-    for (const CompilerError& error : compiler_errors(run.output))
-        errors.push_back({{"file", error.file}, {"line", error.line}, {"column", error.column}, {"message", error.message}});
-    if (errors.empty()) // the linker's errors and others without a line: the lines that say "error"
-        for (const std::string& line : lines_with_error(run.output))
-            errors.push_back({{"file", ""}, {"line", 0}, {"column", 0}, {"message", line}});
+    // Runs to its end (explore_worker.hpp says why): a save meanwhile builds again after it.
+    const WorkerRun run = worker_.build(*settings_.live);
     bool built = run.exit.success();
     std::string copy_error;
     if (built) {
@@ -221,15 +194,18 @@ bool ExploreSession::build_worker(const std::string& why) {
             if (!old.empty()) std::filesystem::remove(old, error);
         }
     }
+    const std::vector<CompilerError> errors = built ? std::vector<CompilerError>{} : build_errors(run.output);
+    nlohmann::json shown = nlohmann::json::array();
+    for (const CompilerError& error : errors)
+        shown.push_back({{"file", error.file}, {"line", error.line}, {"column", error.column}, {"message", error.message}});
     const std::lock_guard lock(mutex_);
-    build_ = {{"state", built ? "built" : "failed"}, {"why", why}, {"errors", errors},
+    build_ = {{"state", built ? "built" : "failed"}, {"why", why}, {"errors", shown},
               {"output", tail(run.output, 200) + copy_error},
               {"exit", run.exit.reason}, {"seconds", run.seconds}};
     if (!built) {
         activity_ = "idle";
         activity_note_ = "the build failed: the picture is the last one that built";
-        const CompilerError first = errors.empty() ? CompilerError{"", 0, 0, copy_error}
-                                                   : CompilerError{errors[0]["file"], errors[0]["line"], 0, errors[0]["message"]};
+        const CompilerError first = errors.empty() ? CompilerError{"", 0, 0, copy_error} : errors.front();
         std::fprintf(stderr, "whitted explore: your labs do not build: %s%s%s\n", first.file.c_str(),
                      first.file.empty() ? "" : (":" + std::to_string(first.line) + ": ").c_str(), first.message.c_str());
     }
@@ -284,22 +260,22 @@ void ExploreSession::render_picture(const KeepGoing& keep_going) {
         stage_ = run.json ? run.json->value("stage", 0) : 0;
         render_["stage"] = stage_;
         views_.clear();
-        image_.reset();
         difference_ = nullptr;
-        if (step.preview) continue;
+        if (step.preview || !goal_) continue;
+        std::optional<Image> picture;
         try {
-            image_ = read_png_bytes(png_, "the picture");
-        } catch (const std::exception&) {
+            picture = read_png_bytes(png_, "the picture");
+        } catch (const std::exception&) { // not a whole PNG (a full disk): no difference
         }
-        if (goal_ && image_ && goal_->width == image_->width && goal_->height == image_->height) {
-            const ImageDifference d = compare_images(*goal_, *image_);
+        if (picture && goal_->width == picture->width && goal_->height == picture->height) {
+            const ImageDifference d = compare_images(*goal_, *picture);
             const ImageGate gate;
             difference_ = {{"failing_pixels", d.failing_pixels}, {"pixels", d.pixel_count}, {"non_finite_pixels", d.non_finite_pixels},
                            {"failing_fraction", d.failing_fraction}, {"mean_error", d.mean_error}, {"max_error", d.max_error},
                            {"worst", {d.worst_x, d.worst_y}}, {"psnr", std::isfinite(d.psnr) ? nlohmann::json(d.psnr) : nlohmann::json(nullptr)},
                            {"passed", d.passed}, {"pixel_tolerance", gate.pixel_tolerance},
                            {"max_failing_fraction", gate.max_failing_fraction}, {"max_mean_error", gate.max_mean_error}};
-            views_["difference"] = png_bytes(heat_picture(*goal_, *image_));
+            views_["difference"] = png_bytes(heat_picture(*goal_, *picture));
         }
     }
 }

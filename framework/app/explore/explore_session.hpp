@@ -28,7 +28,7 @@ struct ExploreSettings {
     std::string scene;               // the scene file
     std::optional<int> stage;        // --stage; none: the highest whose labs are done, as render picks
     int threads = 0;                 // for the worker's renders; 0: one per core
-    std::filesystem::path worker;    // the program that renders (the live build's worker, or this program)
+    std::filesystem::path worker;    // without a live build, the program that renders (this one)
     std::optional<LiveBuild> live;   // rebuild the worker when a lab file is saved
     std::filesystem::path scratch;   // an existing folder for the worker's files
 };
@@ -78,7 +78,6 @@ class ExploreSession {
     int version_ = 0;                  // counts the pictures shown
     bool preview_ = false;             // png_ is the small first render
     int stage_ = 0;                    // the stage png_ was rendered at (0: no picture yet)
-    std::optional<Image> image_;       // png_ as an image, when whole (for the difference)
     std::optional<Image> goal_;        // a lab's scene: the lab's goal picture
     std::string goal_png_, goal_file_;
     int goal_stage_ = 0;

@@ -51,8 +51,9 @@ class ExploreWorker {
     /// --json and --picture.
     WorkerRun trace(const std::filesystem::path& program, int x, int y, std::optional<int> sample, int stage,
                     const KeepGoing& keep_going) const;
-    /// `cmake --build` of the live build's worker target.
-    WorkerRun build(const LiveBuild& build, const KeepGoing& keep_going) const;
+    /// `cmake --build` of the live build's worker target, never stopped half-way (stopping cmake would leave its
+    /// compilers running).
+    WorkerRun build(const LiveBuild& build) const;
 
   private:
     WorkerRun run(std::vector<std::string> argv, const std::string& png, const std::string& json,
