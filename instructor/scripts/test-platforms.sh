@@ -94,7 +94,7 @@ httplib_header() {
     local url=http://deb.debian.org/debian/pool/main/c/cpp-httplib/cpp-httplib_0.11.4+ds.orig.tar.xz
     local sha256=8b1a5df569003b6a4f24c68489bbda5c64aec94697bdc9ebba5d79408b2ae7eb
     mkdir -p "$cache/downloads"
-    if ! echo "$sha256  $archive" | sha256sum -c --quiet 2> /dev/null; then
+    if ! echo "$sha256  $archive" | sha256sum -c --quiet > /dev/null 2>&1; then
         rm -f "$archive"
         if ! curl -fsS --max-time 60 -o "$archive.part" "$url" || ! echo "$sha256  $archive.part" | sha256sum -c --quiet; then
             rm -f "$archive.part"
