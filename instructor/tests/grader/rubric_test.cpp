@@ -119,7 +119,9 @@ TEST(Rubric, TheProjectRubricGradesEveryPictureOnlyAfterTheUnitTests) {
         int pictures = 0;
         for (const Rule& rule : lab.rules) {
             const bool hidden = rule.tests == std::vector<std::string>{"Hidden*"};
-            if (hidden) EXPECT_FALSE(rule.exclude.empty()) << lab.lab << ": the hidden rule must leave the hidden picture to a rule that requires unit";
+            if (hidden) {
+                EXPECT_FALSE(rule.exclude.empty()) << lab.lab << ": the hidden rule must leave the hidden picture to a rule that requires unit";
+            }
             if (!rule.image) continue;
             ++pictures;
             EXPECT_EQ(rule.requires_rules, std::vector<std::string>{lab.lab + ":unit"}) << lab.lab << ", rule " << rule.id;
