@@ -283,7 +283,6 @@ std::filesystem::path own_executable() {
 #endif
 }
 
-
 void free_own_file() {}
 
 void add_library_folder(const std::filesystem::path&) {}

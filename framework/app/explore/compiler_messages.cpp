@@ -77,7 +77,6 @@ std::optional<CompilerError> msvc_error(std::string_view line) {
     return error;
 }
 
-
 // Calls `take(line)` on each line of `output` (without its "\r\n" or "\n") while it returns true.
 template <typename Take>
 void for_each_line(std::string_view output, Take take) {
