@@ -184,10 +184,18 @@ void free_own_file() {
             if (entry.path().filename().wstring().starts_with(stem)) std::filesystem::remove(entry.path(), ignored);
     } catch (const std::filesystem::filesystem_error&) { // a folder that cannot be listed: nothing removed
     }
-    const std::filesystem::path moved =
-        self.parent_path() / (stem + std::to_wstring(GetCurrentProcessId()) + self.extension().wstring());
-    if (!MoveFileExW(self.c_str(), moved.c_str(), MOVEFILE_REPLACE_EXISTING)) return; // as it was: locked
-    if (!CopyFileW(moved.c_str(), self.c_str(), TRUE)) MoveFileExW(moved.c_str(), self.c_str(), 0); // put back
+    // The copy is made first, under a name of its own: the program's name is never a missing or half-written file
+    // for another process starting the program, only two renames stand between the original and the copy.
+    const std::wstring pid = std::to_wstring(GetCurrentProcessId());
+    const std::filesystem::path copy =
+        self.parent_path() / (self.stem().wstring() + L".copy-" + pid + self.extension().wstring());
+    const std::filesystem::path moved = self.parent_path() / (stem + pid + self.extension().wstring());
+    if (!CopyFileW(self.c_str(), copy.c_str(), FALSE)) return; // as it was
+    if (MoveFileExW(self.c_str(), moved.c_str(), MOVEFILE_REPLACE_EXISTING)) {
+        if (MoveFileExW(copy.c_str(), self.c_str(), 0)) return;
+        MoveFileExW(moved.c_str(), self.c_str(), 0); // put back
+    }
+    DeleteFileW(copy.c_str()); // as it was: the file is locked
 }
 
 void add_library_folder(const std::filesystem::path& folder) {

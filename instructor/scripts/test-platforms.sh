@@ -174,6 +174,16 @@ progress() {
     echo "$status" > "$log.status"
 }
 
+# test_outputs BUILD NAMES: what each of the tests NAMES printed in the last CTest run in BUILD (its first 40 lines).
+test_outputs() {
+    local name
+    for name in $2; do
+        echo "test-platforms: the output of $name:"
+        awk -v name="$name" '$2 == "Test:" && $3 == name { on = 1 } on { print } on && /^<end of output>/ { exit }' \
+            "$1/Testing/Temporary/LastTest.log" | head -40
+    done
+}
+
 # With the stubs: every lab's tests fail, and every failing test failed on a stub's "not implemented yet".
 check_stubs() {
     local target=$1 handout=$2 build=$3 log=$work/$1-stubs.log labs failed waiting others
@@ -189,7 +199,10 @@ check_stubs() {
     waiting=$(awk '/^[0-9]+\/[0-9]+ Test: / { name = $3 } /is not implemented yet/ && name != "" { print name; name = "" }' \
         "$build/Testing/Temporary/LastTest.log" | sort -u)
     others=$(comm -23 <(printf '%s\n' "$failed") <(printf '%s\n' "$waiting"))
-    [ -z "$others" ] || fail "$target: with the stubs, these tests failed without a stub's message: $others"
+    if [ -n "$others" ]; then
+        test_outputs "$build" "$others"
+        fail "$target: with the stubs, these tests failed without a stub's message: $others"
+    fi
     echo "$target stubs: $(grep -c . <<< "$failed") tests fail, each on a stub;" \
         "$(grep -c ' Passed ' "$build/Testing/progress.log") pass (they need no lab)"
 }
@@ -201,7 +214,11 @@ check_reference() {
     build_handout "$target" "$build" "$work/$target-build-reference.log"
     progress "$handout" "$build" "$log"
     grep -E "tests pass" "$log"
-    [ "$(cat "$log.status")" -eq 0 ] || fail "$target: make test's report failed with the reference labs"
+    if [ "$(cat "$log.status")" -ne 0 ]; then
+        test_outputs "$build" "$(grep -E "\*\*\*(Failed|Exception|Timeout)|Not Run" "$build/Testing/progress.log" |
+            sed -E 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/')"
+        fail "$target: make test's report failed with the reference labs"
+    fi
     not_ok=$(grep -E "tests pass" "$log" | grep -v "^ok " || true)
     [ -z "$not_ok" ] || fail "$target: progress lines without ok with the reference labs: $not_ok"
     echo "$target reference labs: $(grep -E "tests passed, [0-9]+ tests failed out of" "$build/Testing/progress.log")," \

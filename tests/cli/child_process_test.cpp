@@ -46,24 +46,6 @@ TEST(OwnExecutable, IsThisTestsProgram) {
     EXPECT_TRUE(std::filesystem::is_regular_file(self)) << self;
 }
 
-#ifdef _WIN32
-// Windows refuses to open a running program's file for writing (a build that relinks it fails) until the
-// program moves it aside: then a copy is in its place, which a build may rewrite.
-TEST(FreeOwnFile, LetsABuildRewriteTheRunningProgramsFile) {
-    const std::filesystem::path self = own_executable();
-    const auto size = std::filesystem::file_size(self);
-    free_own_file();
-    ASSERT_TRUE(std::filesystem::is_regular_file(self)) << self;
-    EXPECT_EQ(std::filesystem::file_size(self), size) << "not a copy of the program";
-    bool moved = false;
-    for (const auto& entry : std::filesystem::directory_iterator(self.parent_path()))
-        moved = moved || entry.path().filename().string().starts_with(self.stem().string() + ".running-");
-    EXPECT_TRUE(moved) << "the running program was not moved aside";
-    std::ofstream rewrite(self, std::ios::binary | std::ios::app);
-    EXPECT_TRUE(rewrite.is_open()) << "the program's file is still locked";
-}
-#endif
-
 TEST(ChildProcess, ReportsExitCodeZero) {
     const ChildExit exit = ChildProcess(probe({}), output_file()).wait();
     EXPECT_TRUE(exit.success());
