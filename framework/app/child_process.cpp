@@ -178,17 +178,19 @@ void free_own_file() {
     const std::filesystem::path self = own_executable();
     if (self.empty()) return;
     const std::wstring stem = self.stem().wstring() + L".running-";
+    const std::wstring copy_stem = self.stem().wstring() + L".copy-";
     std::error_code ignored;
     try {
-        for (const auto& entry : std::filesystem::directory_iterator(self.parent_path(), ignored))
-            if (entry.path().filename().wstring().starts_with(stem)) std::filesystem::remove(entry.path(), ignored);
+        for (const auto& entry : std::filesystem::directory_iterator(self.parent_path(), ignored)) {
+            const std::wstring name = entry.path().filename().wstring();
+            if (name.starts_with(stem) || name.starts_with(copy_stem)) std::filesystem::remove(entry.path(), ignored);
+        }
     } catch (const std::filesystem::filesystem_error&) { // a folder that cannot be listed: nothing removed
     }
     // The copy is made first, under a name of its own: the program's name is never a missing or half-written file
     // for another process starting the program, only two renames stand between the original and the copy.
     const std::wstring pid = std::to_wstring(GetCurrentProcessId());
-    const std::filesystem::path copy =
-        self.parent_path() / (self.stem().wstring() + L".copy-" + pid + self.extension().wstring());
+    const std::filesystem::path copy = self.parent_path() / (copy_stem + pid + self.extension().wstring());
     const std::filesystem::path moved = self.parent_path() / (stem + pid + self.extension().wstring());
     if (!CopyFileW(self.c_str(), copy.c_str(), FALSE)) return; // as it was
     if (MoveFileExW(self.c_str(), moved.c_str(), MOVEFILE_REPLACE_EXISTING)) {

@@ -14,6 +14,10 @@ using namespace whitted;
 TEST(FreeOwnFile, LetsABuildRewriteTheRunningProgramsFile) {
     const std::filesystem::path self = own_executable();
     const auto size = std::filesystem::file_size(self);
+    // A copy an earlier run left behind, stopped before it could put the copy in its place.
+    const std::filesystem::path left = self.parent_path() / (self.stem().string() + ".copy-1.exe");
+    std::ofstream(left, std::ios::binary) << "left by an earlier run";
+    ASSERT_TRUE(std::filesystem::exists(left));
     free_own_file();
     ASSERT_TRUE(std::filesystem::is_regular_file(self)) << self;
     EXPECT_EQ(std::filesystem::file_size(self), size) << "not a copy of the program";
@@ -25,7 +29,7 @@ TEST(FreeOwnFile, LetsABuildRewriteTheRunningProgramsFile) {
         copy_left = copy_left || name.starts_with(self.stem().string() + ".copy-");
     }
     EXPECT_TRUE(moved) << "the running program was not moved aside";
-    EXPECT_FALSE(copy_left) << "the copy was left under its own name, not put in the program's place";
+    EXPECT_FALSE(copy_left) << "a copy is left under its own name: an earlier run's, or this one's not put in place";
     std::ofstream rewrite(self, std::ios::binary | std::ios::app);
     EXPECT_TRUE(rewrite.is_open()) << "the program's file is still locked";
 }
