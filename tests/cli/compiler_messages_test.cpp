@@ -70,3 +70,24 @@ TEST(BuildErrors, TheLinkersLinesWhenNoCompilerErrorHasALine) {
     // With a compiler error that has its line, that one alone.
     EXPECT_EQ(build_errors("a.cpp:3:1: error: e\ncollect2: error: ld returned 1\n").size(), 1u);
 }
+
+// MSBuild (Visual Studio's generator) adds the project to each error line and repeats the errors in its summary.
+TEST(CompilerErrors, MsbuildsProjectSuffixAndSummaryAreLeftOut) {
+    const std::string project = " [C:\\Users\\Zoe\\labs\\build\\whitted_labs.vcxproj]\r\n";
+    const std::string error = "C:\\Users\\Zoe\\labs\\05_refraction.cpp(42,10): error C2143: syntax error: missing ';' before '}'";
+    const std::string output = "  05_refraction.cpp\r\n" + error + project + "\r\nBuild FAILED.\r\n\r\n" +
+                               "\"C:\\Users\\Zoe\\labs\\build\\ALL_BUILD.vcxproj\" (default target) (1) ->\r\n" + "  " +
+                               error + project + "\r\n    0 Warning(s)\r\n    1 Error(s)\r\n";
+    const std::vector<CompilerError> errors = build_errors(output);
+    ASSERT_EQ(errors.size(), 1u);
+    expect_error(errors[0], "C:\\Users\\Zoe\\labs\\05_refraction.cpp", 42, 10, "syntax error: missing ';' before '}'");
+}
+
+TEST(BuildErrors, MsvcsLinkerLinesOnceWithoutTheProjectOrTheCount) {
+    const std::string link = "05_refraction.obj : error LNK2019: unresolved external symbol \"not_defined_anywhere\"";
+    const std::string output = link + " [C:\\labs\\build\\whitted.vcxproj]\r\nBuild FAILED.\r\n  " + link +
+                               " [C:\\labs\\build\\whitted.vcxproj]\r\n    0 Warning(s)\r\n    1 Error(s)\r\n";
+    const std::vector<CompilerError> errors = build_errors(output);
+    ASSERT_EQ(errors.size(), 1u);
+    expect_error(errors[0], "", 0, 0, link);
+}

@@ -26,6 +26,13 @@ std::optional<std::pair<std::string_view, std::string_view>> split_at(std::strin
     return std::nullopt;
 }
 
+// `line` without the " [C:\...\x.vcxproj]" that MSBuild adds to every error line it passes on.
+std::string_view without_project(std::string_view line) {
+    if (line.ends_with(".vcxproj]"))
+        if (const std::size_t open = line.rfind(" ["); open != std::string_view::npos) line.remove_suffix(line.size() - open);
+    return line;
+}
+
 // GCC and Clang: "file:line:column: error: message" (column optional; file may hold ':', as in C:\...).
 std::optional<CompilerError> gnu_error(std::string_view line) {
     const auto parts = split_at(line, {": fatal error: ", ": error: "});
@@ -70,11 +77,29 @@ std::optional<CompilerError> msvc_error(std::string_view line) {
     std::string_view file = place.substr(0, open);
     while (!file.empty() && file.front() == ' ') file.remove_prefix(1); // MSBuild indents
     error.file = file;
-    std::string_view message = parts->second; // "C2143: syntax error: ..."
+    std::string_view message = without_project(parts->second); // "C2143: syntax error: ..."
     if (const std::size_t code = message.find(": "); code != std::string_view::npos && message.front() == 'C')
         message.remove_prefix(code + 2);
     error.message = message;
     return error;
+}
+
+// MSBuild's summary line "    1 Error(s)" (or "Warning(s)"): a count, not an error.
+bool is_count_line(std::string_view line) {
+    while (!line.empty() && line.front() == ' ') line.remove_prefix(1);
+    const std::size_t space = line.find(' ');
+    return space != std::string_view::npos && small_number(line.substr(0, space)) &&
+           (line.substr(space) == " Error(s)" || line.substr(space) == " Warning(s)");
+}
+
+bool same_error(const CompilerError& a, const CompilerError& b) {
+    return a.file == b.file && a.line == b.line && a.column == b.column && a.message == b.message;
+}
+
+// Adds `error` to `errors` unless it is there already (MSBuild repeats every error in its summary).
+void add_new(std::vector<CompilerError>& errors, CompilerError error) {
+    if (std::none_of(errors.begin(), errors.end(), [&](const CompilerError& seen) { return same_error(seen, error); }))
+        errors.push_back(std::move(error));
 }
 
 // Calls `take(line)` on each line of `output` (without its "\r\n" or "\n") while it returns true.
@@ -96,8 +121,8 @@ void for_each_line(std::string_view output, Take take) {
 std::vector<CompilerError> compiler_errors(std::string_view output, std::size_t limit) {
     std::vector<CompilerError> errors;
     for_each_line(output, [&](std::string_view line) {
-        if (std::optional<CompilerError> error = gnu_error(line)) errors.push_back(std::move(*error));
-        else if (std::optional<CompilerError> msvc = msvc_error(line)) errors.push_back(std::move(*msvc));
+        if (std::optional<CompilerError> error = gnu_error(line)) add_new(errors, std::move(*error));
+        else if (std::optional<CompilerError> msvc = msvc_error(line)) add_new(errors, std::move(*msvc));
         return errors.size() < limit;
     });
     return errors;
@@ -107,11 +132,14 @@ std::vector<CompilerError> build_errors(std::string_view output) {
     std::vector<CompilerError> errors = compiler_errors(output);
     if (!errors.empty()) return errors;
     for_each_line(output, [&](std::string_view line) {
+        line = without_project(line);
+        if (is_count_line(line)) return true;
         std::string lower(line);
         std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        for (const char* word : {"error", "undefined reference", "undefined symbol"}) // GNU ld, lld and Apple's ld
+        for (const char* word : {"error", "undefined reference", "undefined symbol"}) // GNU ld, lld, Apple's ld, MSVC's link
             if (lower.find(word) != std::string::npos) {
-                errors.push_back(CompilerError{"", 0, 0, std::string(line)});
+                while (!line.empty() && line.front() == ' ') line.remove_prefix(1); // MSBuild indents its summary
+                add_new(errors, CompilerError{"", 0, 0, std::string(line)});
                 break;
             }
         return errors.size() < 10;

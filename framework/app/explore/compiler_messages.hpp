@@ -19,12 +19,12 @@ struct CompilerError {
     std::string message;
 };
 
-/// The errors of `output` in order, at most `limit` of them.
+/// The errors of `output` in order, each once (MSBuild repeats them in its summary), at most `limit` of them.
 std::vector<CompilerError> compiler_errors(std::string_view output, std::size_t limit = 20);
 
 /// What a failed build shows: its compiler errors, or when there is none (the linker's errors, which have no
-/// line), the lines that say "error" or name an undefined function (any case) as messages without a file, at
-/// most 10.
+/// line), the lines that say "error" or name an undefined function (any case) as messages without a file, each
+/// once, at most 10.
 std::vector<CompilerError> build_errors(std::string_view output);
 
 } // namespace whitted
