@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cwchar>
 #include <system_error>
 #include <windows.h>
 #else
@@ -174,30 +175,63 @@ std::filesystem::path own_executable() {
     }
 }
 
+namespace {
+
+// The process that made NAME.copy-PID.exe, from its name (`stem` is "NAME.copy-"), when the name is such a name.
+std::optional<DWORD> copy_maker(const std::wstring& name, const std::wstring& stem, const std::wstring& extension) {
+    if (!name.starts_with(stem) || !name.ends_with(extension) || name.size() <= stem.size() + extension.size())
+        return std::nullopt;
+    const std::wstring digits = name.substr(stem.size(), name.size() - stem.size() - extension.size());
+    if (digits.size() > 10 || !std::all_of(digits.begin(), digits.end(), [](wchar_t c) { return c >= L'0' && c <= L'9'; }))
+        return std::nullopt;
+    return static_cast<DWORD>(std::wcstoul(digits.c_str(), nullptr, 10));
+}
+
+bool process_runs(DWORD pid) {
+    const HANDLE process = OpenProcess(PROCESS_QUERY_LIMITED_INFORMATION, FALSE, pid);
+    if (!process) return false;
+    DWORD code = 0;
+    const bool running = GetExitCodeProcess(process, &code) && code == STILL_ACTIVE;
+    CloseHandle(process);
+    return running;
+}
+
+} // namespace
+
 void free_own_file() {
     const std::filesystem::path self = own_executable();
     if (self.empty()) return;
+    const std::wstring extension = self.extension().wstring();
     const std::wstring stem = self.stem().wstring() + L".running-";
     const std::wstring copy_stem = self.stem().wstring() + L".copy-";
+    // What earlier runs left: the moved programs (a running one's is locked, and stays), and the copies of runs
+    // stopped before they renamed them (not the copy of a run in the middle of this).
     std::error_code ignored;
     try {
         for (const auto& entry : std::filesystem::directory_iterator(self.parent_path(), ignored)) {
             const std::wstring name = entry.path().filename().wstring();
-            if (name.starts_with(stem) || name.starts_with(copy_stem)) std::filesystem::remove(entry.path(), ignored);
+            const std::optional<DWORD> maker = copy_maker(name, copy_stem, extension);
+            if (name.starts_with(stem) || (maker && !process_runs(*maker))) std::filesystem::remove(entry.path(), ignored);
         }
     } catch (const std::filesystem::filesystem_error&) { // a folder that cannot be listed: nothing removed
     }
-    // The copy is made first, under a name of its own: the program's name is never a missing or half-written file
-    // for another process starting the program, only two renames stand between the original and the copy.
+    // The copy is made first, under a name of its own: the program's name is never a half-written file for another
+    // process starting the program, and missing only between two renames.
     const std::wstring pid = std::to_wstring(GetCurrentProcessId());
-    const std::filesystem::path copy = self.parent_path() / (copy_stem + pid + self.extension().wstring());
-    const std::filesystem::path moved = self.parent_path() / (stem + pid + self.extension().wstring());
+    const std::filesystem::path copy = self.parent_path() / (copy_stem + pid + extension);
+    const std::filesystem::path moved = self.parent_path() / (stem + pid + extension);
     if (!CopyFileW(self.c_str(), copy.c_str(), FALSE)) return; // as it was
-    if (MoveFileExW(self.c_str(), moved.c_str(), MOVEFILE_REPLACE_EXISTING)) {
-        if (MoveFileExW(copy.c_str(), self.c_str(), 0)) return;
-        MoveFileExW(moved.c_str(), self.c_str(), 0); // put back
+    if (!MoveFileExW(self.c_str(), moved.c_str(), MOVEFILE_REPLACE_EXISTING)) { // as it was: the file is locked
+        DeleteFileW(copy.c_str());
+        return;
     }
-    DeleteFileW(copy.c_str()); // as it was: the file is locked
+    for (int attempt = 0; attempt < 5; ++attempt) { // a virus scanner may hold the new copy for a moment
+        if (MoveFileExW(copy.c_str(), self.c_str(), 0)) return;
+        Sleep(20);
+    }
+    if (MoveFileExW(moved.c_str(), self.c_str(), 0)) DeleteFileW(copy.c_str()); // put back: as it was
+    // Else a build wrote a new program there meanwhile, or neither rename works: the copy stays, not to lose the
+    // program (the next run removes it).
 }
 
 void add_library_folder(const std::filesystem::path& folder) {

@@ -64,7 +64,7 @@ std::filesystem::path own_executable();
 
 /// Lets a build rewrite this program's file while it runs. Windows locks the file of a running program (a build
 /// that relinks it fails), but lets it be renamed: the running program moves aside, to NAME.running-PID.exe
-/// beside it, and a copy takes its place. The files earlier runs left are removed (not a running one's).
+/// beside it, and a copy takes its place. The files earlier runs left are removed (not a running run's).
 /// Nothing on other systems, where a build writes a new file and a running program keeps its old one.
 void free_own_file();
 

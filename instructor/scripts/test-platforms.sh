@@ -179,8 +179,8 @@ test_outputs() {
     local name
     for name in $2; do
         echo "test-platforms: the output of $name:"
-        awk -v name="$name" '$2 == "Test:" && $3 == name { on = 1 } on { print } on && /^<end of output>/ { exit }' \
-            "$1/Testing/Temporary/LastTest.log" | head -40
+        awk -v name="$name" '$2 == "Test:" && $3 == name { on = 1 } on { print; if (++n == 40 || /^<end of output>/) exit }' \
+            "$1/Testing/Temporary/LastTest.log"
     done
 }
 
@@ -195,7 +195,7 @@ check_stubs() {
         fail "$target: not every one of the $labs labs has a progress line with 0 tests passed"
     # Every failed test's output names a stub (read from the CTest log as the progress report reads it).
     failed=$(grep -E "\*\*\*(Failed|Exception|Timeout)|Not Run" "$build/Testing/progress.log" |
-        sed -E 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/' | sort)
+        sed -nE 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/p' | sort)
     waiting=$(awk '/^[0-9]+\/[0-9]+ Test: / { name = $3 } /is not implemented yet/ && name != "" { print name; name = "" }' \
         "$build/Testing/Temporary/LastTest.log" | sort -u)
     others=$(comm -23 <(printf '%s\n' "$failed") <(printf '%s\n' "$waiting"))
@@ -216,7 +216,7 @@ check_reference() {
     grep -E "tests pass" "$log"
     if [ "$(cat "$log.status")" -ne 0 ]; then
         test_outputs "$build" "$(grep -E "\*\*\*(Failed|Exception|Timeout)|Not Run" "$build/Testing/progress.log" |
-            sed -E 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/')"
+            sed -nE 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/p')"
         fail "$target: make test's report failed with the reference labs"
     fi
     not_ok=$(grep -E "tests pass" "$log" | grep -v "^ok " || true)

@@ -85,8 +85,9 @@ TEST(CompilerErrors, MsbuildsProjectSuffixAndSummaryAreLeftOut) {
 
 TEST(BuildErrors, MsvcsLinkerLinesOnceWithoutTheProjectOrTheCount) {
     const std::string link = "05_refraction.obj : error LNK2019: unresolved external symbol \"not_defined_anywhere\"";
-    const std::string output = link + " [C:\\labs\\build\\whitted.vcxproj]\r\nBuild FAILED.\r\n  " + link +
-                               " [C:\\labs\\build\\whitted.vcxproj]\r\n    0 Warning(s)\r\n    1 Error(s)\r\n";
+    const std::string project = " [C:\\course [2]\\build\\whitted.vcxproj]\r\n"; // " [" in the path too
+    const std::string output =
+        link + project + "Build FAILED.\r\n  " + link + project + "    0 Warning(s)\r\n    1 Error(s)\r\n";
     const std::vector<CompilerError> errors = build_errors(output);
     ASSERT_EQ(errors.size(), 1u);
     expect_error(errors[0], "", 0, 0, link);

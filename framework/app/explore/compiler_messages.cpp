@@ -26,10 +26,16 @@ std::optional<std::pair<std::string_view, std::string_view>> split_at(std::strin
     return std::nullopt;
 }
 
-// `line` without the " [C:\...\x.vcxproj]" that MSBuild adds to every error line it passes on.
+// `line` without the " [C:\...\x.vcxproj]" that MSBuild adds to every error line it passes on (its path, absolute,
+// may hold " [" too).
 std::string_view without_project(std::string_view line) {
-    if (line.ends_with(".vcxproj]"))
-        if (const std::size_t open = line.rfind(" ["); open != std::string_view::npos) line.remove_suffix(line.size() - open);
+    if (!line.ends_with(".vcxproj]")) return line;
+    const auto absolute = [](std::string_view path) {
+        return path.starts_with("\\\\") || path.starts_with("/") ||
+               (path.size() > 2 && std::isalpha(static_cast<unsigned char>(path[0])) && path.substr(1, 2) == ":\\");
+    };
+    for (std::size_t open = line.rfind(" ["); open != std::string_view::npos && open > 0; open = line.rfind(" [", open - 1))
+        if (absolute(line.substr(open + 2))) return line.substr(0, open);
     return line;
 }
 
