@@ -202,7 +202,7 @@ void free_own_file() {
     const std::filesystem::path self = own_executable();
     if (self.empty()) return;
     const std::wstring extension = self.extension().wstring();
-    const std::wstring stem = self.stem().wstring() + L".running-";
+    const std::wstring moved_stem = self.stem().wstring() + L".running-";
     const std::wstring copy_stem = self.stem().wstring() + L".copy-";
     // What earlier runs left: the moved programs (a running one's is locked, and stays), and the copies of runs
     // stopped before they renamed them (not the copy of a run in the middle of this).
@@ -211,7 +211,8 @@ void free_own_file() {
         for (const auto& entry : std::filesystem::directory_iterator(self.parent_path(), ignored)) {
             const std::wstring name = entry.path().filename().wstring();
             const std::optional<DWORD> maker = copy_maker(name, copy_stem, extension);
-            if (name.starts_with(stem) || (maker && !process_runs(*maker))) std::filesystem::remove(entry.path(), ignored);
+            if (name.starts_with(moved_stem) || (maker && !process_runs(*maker)))
+                std::filesystem::remove(entry.path(), ignored);
         }
     } catch (const std::filesystem::filesystem_error&) { // a folder that cannot be listed: nothing removed
     }
@@ -219,7 +220,7 @@ void free_own_file() {
     // process starting the program, and missing only between two renames.
     const std::wstring pid = std::to_wstring(GetCurrentProcessId());
     const std::filesystem::path copy = self.parent_path() / (copy_stem + pid + extension);
-    const std::filesystem::path moved = self.parent_path() / (stem + pid + extension);
+    const std::filesystem::path moved = self.parent_path() / (moved_stem + pid + extension);
     if (!CopyFileW(self.c_str(), copy.c_str(), FALSE)) return; // as it was
     if (!MoveFileExW(self.c_str(), moved.c_str(), MOVEFILE_REPLACE_EXISTING)) { // as it was: the file is locked
         DeleteFileW(copy.c_str());

@@ -174,6 +174,11 @@ progress() {
     echo "$status" > "$log.status"
 }
 
+# failed_tests BUILD: the names of the tests that failed (or did not run) in the progress report's CTest run in BUILD.
+failed_tests() {
+    grep -E "\*\*\*(Failed|Exception|Timeout)|Not Run" "$1/Testing/progress.log" | sed -nE 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/p'
+}
+
 # test_outputs BUILD NAMES: what each of the tests NAMES printed in the last CTest run in BUILD (its first 40 lines).
 test_outputs() {
     local name
@@ -194,8 +199,7 @@ check_stubs() {
     [ "$(grep -cE "^   lab [0-9]+ \(.*\): 0/[0-9]+ tests pass" "$log")" -eq "$labs" ] ||
         fail "$target: not every one of the $labs labs has a progress line with 0 tests passed"
     # Every failed test's output names a stub (read from the CTest log as the progress report reads it).
-    failed=$(grep -E "\*\*\*(Failed|Exception|Timeout)|Not Run" "$build/Testing/progress.log" |
-        sed -nE 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/p' | sort)
+    failed=$(failed_tests "$build" | sort)
     waiting=$(awk '/^[0-9]+\/[0-9]+ Test: / { name = $3 } /is not implemented yet/ && name != "" { print name; name = "" }' \
         "$build/Testing/Temporary/LastTest.log" | sort -u)
     others=$(comm -23 <(printf '%s\n' "$failed") <(printf '%s\n' "$waiting"))
@@ -215,8 +219,7 @@ check_reference() {
     progress "$handout" "$build" "$log"
     grep -E "tests pass" "$log"
     if [ "$(cat "$log.status")" -ne 0 ]; then
-        test_outputs "$build" "$(grep -E "\*\*\*(Failed|Exception|Timeout)|Not Run" "$build/Testing/progress.log" |
-            sed -nE 's/.*Test +#[0-9]+: ([^ ]+) .*/\1/p')"
+        test_outputs "$build" "$(failed_tests "$build")"
         fail "$target: make test's report failed with the reference labs"
     fi
     not_ok=$(grep -E "tests pass" "$log" | grep -v "^ok " || true)

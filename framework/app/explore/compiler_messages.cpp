@@ -26,6 +26,12 @@ std::optional<std::pair<std::string_view, std::string_view>> split_at(std::strin
     return std::nullopt;
 }
 
+// `text` without its leading spaces (MSBuild indents the lines it passes on, and its summary).
+std::string_view without_indent(std::string_view text) {
+    while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+    return text;
+}
+
 // `line` without the " [C:\...\x.vcxproj]" that MSBuild adds to every error line it passes on (its path, absolute,
 // may hold " [" too).
 std::string_view without_project(std::string_view line) {
@@ -80,9 +86,7 @@ std::optional<CompilerError> msvc_error(std::string_view line) {
     if (!line_number || !column) return std::nullopt;
     error.line = *line_number;
     error.column = *column;
-    std::string_view file = place.substr(0, open);
-    while (!file.empty() && file.front() == ' ') file.remove_prefix(1); // MSBuild indents
-    error.file = file;
+    error.file = without_indent(place.substr(0, open));
     std::string_view message = without_project(parts->second); // "C2143: syntax error: ..."
     if (const std::size_t code = message.find(": "); code != std::string_view::npos && message.front() == 'C')
         message.remove_prefix(code + 2);
@@ -92,20 +96,15 @@ std::optional<CompilerError> msvc_error(std::string_view line) {
 
 // MSBuild's summary line "    1 Error(s)" (or "Warning(s)"): a count, not an error.
 bool is_count_line(std::string_view line) {
-    while (!line.empty() && line.front() == ' ') line.remove_prefix(1);
+    line = without_indent(line);
     const std::size_t space = line.find(' ');
     return space != std::string_view::npos && small_number(line.substr(0, space)) &&
            (line.substr(space) == " Error(s)" || line.substr(space) == " Warning(s)");
 }
 
-bool same_error(const CompilerError& a, const CompilerError& b) {
-    return a.file == b.file && a.line == b.line && a.column == b.column && a.message == b.message;
-}
-
 // Adds `error` to `errors` unless it is there already (MSBuild repeats every error in its summary).
 void add_new(std::vector<CompilerError>& errors, CompilerError error) {
-    if (std::none_of(errors.begin(), errors.end(), [&](const CompilerError& seen) { return same_error(seen, error); }))
-        errors.push_back(std::move(error));
+    if (std::find(errors.begin(), errors.end(), error) == errors.end()) errors.push_back(std::move(error));
 }
 
 // Calls `take(line)` on each line of `output` (without its "\r\n" or "\n") while it returns true.
@@ -144,8 +143,7 @@ std::vector<CompilerError> build_errors(std::string_view output) {
         std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         for (const char* word : {"error", "undefined reference", "undefined symbol"}) // GNU ld, lld, Apple's ld, MSVC's link
             if (lower.find(word) != std::string::npos) {
-                while (!line.empty() && line.front() == ' ') line.remove_prefix(1); // MSBuild indents its summary
-                add_new(errors, CompilerError{"", 0, 0, std::string(line)});
+                add_new(errors, CompilerError{"", 0, 0, std::string(without_indent(line))});
                 break;
             }
         return errors.size() < 10;

@@ -17,6 +17,7 @@ struct CompilerError {
     int line = 0;
     int column = 0;     // 0: not given
     std::string message;
+    bool operator==(const CompilerError&) const = default;
 };
 
 /// The errors of `output` in order, each once (MSBuild repeats them in its summary), at most `limit` of them.
